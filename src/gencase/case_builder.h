@@ -1,0 +1,95 @@
+// SeaSpring — MIT licence.
+/// \file case_builder.h
+/// \brief gencase's pipeline: case definition XML → lattice → particles, constants, bonds,
+///        motion and parameters, all validated before anything is written.
+#pragma once
+
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/particle_set.h"
+#include "gencase/command_runner.h"
+#include "gencase/constants.h"
+#include "gencase/motion.h"
+#include "gencase/particle_extraction.h"
+#include "gencase/simulation_domain.h"
+#include "gencase/vcpm_bonds.h"
+#include "gencase/vcpm_solids.h"
+#include "gencase/xml_source.h"
+
+namespace seaspring::gencase {
+
+struct GencaseOptions {
+    std::string definition;   ///< CASE_Def.xml (".xml" may be omitted, as with GenCase)
+    std::string output_base;  ///< OUTDIR/NAME
+    double dp_override = 0;   ///< -dp:VALUE (0: use the file's)
+    bool save_vtk = false;    ///< -save:vtk
+    bool verbose = false;
+};
+
+/// Particles of one MK: a contiguous id range.
+struct MkBlock {
+    ParticleType type;
+    std::uint16_t mk;    ///< global MK
+    int mk_user;         ///< mkfluid or mkbound as written in the case
+    std::uint32_t begin;
+    std::uint32_t count;
+};
+
+/// Everything gencase derives; the resolved-case writer and the tests read it.
+struct GeneratedCase {
+    std::string name;
+    MkConfig mkconfig;
+    CaseConstants constants;
+    ParticleSet particles;
+    std::vector<MkBlock> blocks;
+    std::vector<SolidSpec> solids;
+    BondNetwork bonds;
+    BondStats bond_stats;
+    MotionSet motion;
+    DomainBox particle_box;
+    DomainBox domain;
+    std::vector<std::pair<std::string, std::string>> parameters;  ///< resolved, table order
+    std::size_t count(ParticleType t) const;
+};
+
+class CaseBuilder {
+public:
+    CaseBuilder(GencaseOptions options, std::ostream& log);
+    ~CaseBuilder();
+
+    /// Reads and validates the definition and generates everything in memory.
+    const GeneratedCase& build();
+    /// Writes OUTDIR/NAME.xml, NAME.h5 (and NAME.vtu): temporary names first, renamed at the end.
+    void write() const;
+
+    const XmlSource& source() const { return *src_; }
+    const GeneratedCase& result() const { return out_; }
+
+private:
+    void readHeader(pugi::xml_node casedef);
+    void drawGeometry(pugi::xml_node geometry);
+    void readExecution(pugi::xml_node execution);
+    MkTypes classifyMks() const;
+    void checkMkUsage() const;
+    void finishParticles();
+    void resolveParameters(pugi::xml_node parameters);
+    void printSummary() const;
+
+    GencaseOptions opt_;
+    std::ostream& log_;
+    std::unique_ptr<XmlSource> src_;
+    ExpressionEvaluator ev_;
+    ConstantsInput constants_in_;
+    LatticeGrid grid_;
+    std::vector<Vec3i> lattice_;
+    GeneratedCase out_;
+};
+
+/// Resolves "Case_Def" to "Case_Def.xml" when only the latter exists.
+std::string resolveDefinitionPath(const std::string& path);
+
+}  // namespace seaspring::gencase

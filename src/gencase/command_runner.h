@@ -1,0 +1,73 @@
+// SeaSpring — MIT licence.
+/// \file command_runner.h
+/// \brief Runs GenCase `<commands>` (`<mainlist>` and named `<list>`s) on the lattice.
+///
+/// GenCase is a small state machine: the current MK (`setmkfluid`, `setmkbound`,
+/// `setmkvoid`), the draw mode, the transform (`move`, `rotate`, `matrix*`) and whether
+/// points are drawn at all (`setactive`). Drawing commands paint the current MK on the
+/// lattice; later drawing replaces earlier drawing.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "gencase/expression.h"
+#include "gencase/lattice_grid.h"
+#include "gencase/shapes.h"
+#include "gencase/xml_source.h"
+
+namespace seaspring::gencase {
+
+struct MkConfig {
+    int fluidcount = 9;
+    int boundcount = 240;
+    std::uint16_t fluidMk(int mkfluid) const { return std::uint16_t(mkfluid + 1); }
+    std::uint16_t boundMk(int mkbound) const { return std::uint16_t(mkbound + fluidcount + 1); }
+    bool isFluid(std::uint16_t mk) const { return mk >= 1 && mk <= fluidcount; }
+};
+
+class CommandRunner {
+public:
+    CommandRunner(const XmlSource& src, ExpressionEvaluator& ev, LatticeGrid& grid, MkConfig mk,
+                  std::ostream& log, bool verbose);
+
+    /// Runs the `<mainlist>` of a `<commands>` element (named lists become callable).
+    void run(pugi::xml_node commands);
+
+    /// Evaluates `newvar`/`newvarcte`/`setvar` attributes (also used for `<predefinition>`).
+    void defineVariables(pugi::xml_node node, bool constant, bool assign);
+
+private:
+    void runList(pugi::xml_node list, int depth);
+    void runCommand(pugi::xml_node cmd, int depth);
+    void drawBoxCommand(pugi::xml_node cmd);
+    void drawRoundCommand(pugi::xml_node cmd, bool cylinder);
+    void fillBoxCommand(pugi::xml_node cmd);
+    std::vector<double> layers(pugi::xml_node cmd) const;
+    void boxExtent(pugi::xml_node cmd, Vec3d& p0, Vec3d& size) const;
+    void report(pugi::xml_node cmd, std::size_t count);
+
+    const XmlSource& src_;
+    ExpressionEvaluator& ev_;
+    LatticeGrid& grid_;
+    MkConfig mkcfg_;
+    std::ostream& log_;
+    bool verbose_;
+    pugi::xml_node commands_;
+
+    std::uint16_t mk_ = 0;  ///< current global MK, 0 = void
+    bool mk_chosen_ = false;
+    DrawMode mode_ = DrawMode::Full;
+    Affine matrix_;
+    std::vector<Affine> saved_matrices_;
+    bool draw_points_ = true;
+    bool shapeout_noted_ = false;
+};
+
+/// Parses a `<boxfill>` text ("solid", "all^top", "bottom | left | right") into BoxFaces.
+unsigned parseBoxFill(const std::string& text, bool& ok);
+
+}  // namespace seaspring::gencase

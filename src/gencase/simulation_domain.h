@@ -1,0 +1,26 @@
+// SeaSpring — MIT licence.
+/// \file simulation_domain.h
+/// \brief `<simulationdomain>`: the box the solver keeps particles in, from the particles'
+///        bounding box and the forms `default`, `default + v`, `default - v%`, a number or
+///        `#expression`.
+#pragma once
+
+#include <pugixml.hpp>
+
+#include "core/vec3.h"
+#include "gencase/expression.h"
+#include "gencase/xml_source.h"
+
+namespace seaspring::gencase {
+
+struct DomainBox {
+    Vec3d min{0, 0, 0};
+    Vec3d max{0, 0, 0};
+};
+
+/// `node` may be empty (then the domain is the bounding box). Percentages are of the
+/// bounding box size along that axis.
+DomainBox resolveSimulationDomain(const XmlSource& src, pugi::xml_node node,
+                                  const ExpressionEvaluator& ev, const DomainBox& particles_box);
+
+}  // namespace seaspring::gencase

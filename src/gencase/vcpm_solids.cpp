@@ -1,0 +1,130 @@
+// SeaSpring — MIT licence.
+/// \file vcpm_solids.cpp
+#include "gencase/vcpm_solids.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <ostream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace seaspring::gencase {
+
+namespace {
+
+int toInt(const XmlSource& src, pugi::xml_node node, const char* attr, const std::string& s) {
+    char* end = nullptr;
+    const long v = std::strtol(s.c_str(), &end, 10);
+    if (s.empty() || *end != '\0' || v < 0)
+        src.fail(node, std::string(attr) + "=\"" + node.attribute(attr).value() +
+                           "\": expected MK numbers like \"1\" or \"0,2-3\"");
+    return int(v);
+}
+
+std::string trimAll(std::string s) {
+    s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }), s.end());
+    return s;
+}
+
+void validate(const XmlSource& src, pugi::xml_node n, SolidSpec& s, const MkConfig& mk) {
+    auto bad = [&](const std::string& what) { src.fail(n, what); };
+    if (s.mkbound < 0 || s.mkbound >= mk.boundcount)
+        bad("mkbound=" + std::to_string(s.mkbound) + ": expected 0.." + std::to_string(mk.boundcount - 1));
+    if (!(s.density > 0)) bad("density=" + std::to_string(s.density) + ": must be > 0 [kg/m^3]");
+    if (!(s.youngmod > 0)) bad("youngmod=" + std::to_string(s.youngmod) + ": must be > 0 [Pa]");
+    if (!(s.poissratio > -1.0 && s.poissratio < 0.5))
+        bad("poissratio=" + std::to_string(s.poissratio) + ": must lie in (-1, 0.5)");
+    if (!(s.critstretch >= 0)) bad("critstretch=" + std::to_string(s.critstretch) + ": must be >= 0");
+    if (!(s.damping >= 0)) bad("damping=" + std::to_string(s.damping) + ": must be >= 0");
+    s.mk = mk.boundMk(s.mkbound);
+    for (int c : s.clamp_mkbound) {
+        if (c == s.mkbound) bad("mkclamp names the solid's own mkbound " + std::to_string(c));
+        if (c >= mk.boundcount)
+            bad("mkclamp " + std::to_string(c) + ": expected 0.." + std::to_string(mk.boundcount - 1));
+        s.clamp_mk.push_back(mk.boundMk(c));
+    }
+}
+
+}  // namespace
+
+std::vector<int> parseMkList(const XmlSource& src, pugi::xml_node node, const char* attr) {
+    std::vector<int> out;
+    std::stringstream ss(trimAll(src.text(node, attr)));
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        const auto dash = item.find('-');
+        if (dash == std::string::npos) {
+            out.push_back(toInt(src, node, attr, item));
+        } else {
+            const int a = toInt(src, node, attr, item.substr(0, dash));
+            const int b = toInt(src, node, attr, item.substr(dash + 1));
+            if (b < a) src.fail(node, std::string(attr) + ": range " + item + " is reversed");
+            for (int v = a; v <= b; ++v) out.push_back(v);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
+                                   const ExpressionEvaluator& ev, const MkConfig& mk,
+                                   std::ostream& log) {
+    std::vector<SolidSpec> solids;
+    if (pugi::xml_node v = special.child("vcpmsolids")) {
+        src.checkChildren(v, {"solid"});
+        src.checkAttributes(v, {});
+        for (pugi::xml_node n : v.children("solid")) {
+            src.checkAttributes(n, {"mkbound", "mkclamp", "density", "youngmod", "poissratio",
+                                    "critstretch", "damping"});
+            SolidSpec s;
+            s.line = src.lineOf(n);
+            s.declared_in = "vcpmsolids";
+            s.mkbound = src.integer(n, "mkbound", ev);
+            if (n.attribute("mkclamp")) s.clamp_mkbound = parseMkList(src, n, "mkclamp");
+            s.density = src.number(n, "density", ev);
+            s.youngmod = src.number(n, "youngmod", ev);
+            s.poissratio = src.number(n, "poissratio", ev);
+            s.critstretch = src.number(n, "critstretch", ev, 0.0);
+            s.damping = src.number(n, "damping", ev, 0.0);
+            validate(src, n, s, mk);
+            solids.push_back(s);
+        }
+    }
+    if (pugi::xml_node f = special.child("flexstrucs")) {
+        src.checkChildren(f, {"flexstrucbody"});
+        for (pugi::xml_node n : f.children("flexstrucbody")) {
+            src.checkAttributes(n, {"mkbound", "mkclamp"});
+            src.checkChildren(n, {"density", "youngmod", "poissratio", "constitmodel", "hgfactor"});
+            SolidSpec s;
+            s.line = src.lineOf(n);
+            s.declared_in = "flexstrucs";
+            s.mkbound = src.integer(n, "mkbound", ev);
+            if (n.attribute("mkclamp")) s.clamp_mkbound = parseMkList(src, n, "mkclamp");
+            s.density = src.number(src.child(n, "density"), "value", ev);
+            s.youngmod = src.number(src.child(n, "youngmod"), "value", ev);
+            s.poissratio = src.number(src.child(n, "poissratio"), "value", ev);
+            validate(src, n, s, mk);
+            log << "Note: " << src.where(n) << ": <flexstrucbody mkbound=\"" << s.mkbound
+                << "\"> is modelled as a VCPM lattice solid (constitmodel and hgfactor do not apply)\n";
+            solids.push_back(s);
+        }
+    }
+    for (std::size_t i = 0; i < solids.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (solids[i].mkbound == solids[j].mkbound)
+                throwInputError(src.path(), solids[i].line,
+                                "solid mkbound=" + std::to_string(solids[i].mkbound) +
+                                    " is declared twice (first at line " + std::to_string(solids[j].line) + ")");
+    for (const SolidSpec& s : solids)
+        for (const SolidSpec& o : solids)
+            if (std::find(s.clamp_mkbound.begin(), s.clamp_mkbound.end(), o.mkbound) != s.clamp_mkbound.end())
+                throwInputError(src.path(), s.line,
+                                "mkclamp " + std::to_string(o.mkbound) +
+                                    " is itself a solid: a solid can only be clamped to fixed or moving boundaries");
+    return solids;
+}
+
+}  // namespace seaspring::gencase

@@ -1,0 +1,188 @@
+// SeaSpring — MIT licence.
+/// \file xml_source.cpp
+#include "gencase/xml_source.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace seaspring::gencase {
+
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+std::string trim(const std::string& s) {
+    std::size_t b = 0, e = s.size();
+    while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+    while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+    return s.substr(b, e - b);
+}
+
+}  // namespace
+
+double parseNumber(const std::string& text) {
+    const std::string t = trim(text);
+    if (t.empty()) throw ExpressionError("empty value where a number was expected");
+    char* end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    if (end != t.c_str() + t.size())
+        throw ExpressionError("'" + t + "' is not a number (write '#" + t +
+                              "' for an expression)");
+    if (!std::isfinite(v)) throw ExpressionError("'" + t + "' is not a finite number");
+    return v;
+}
+
+XmlSource::XmlSource(const std::string& path) : path_(path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throwInputError(path, 0, "cannot open file");
+    const std::string buffer((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    line_starts_.push_back(0);
+    for (std::size_t i = 0; i < buffer.size(); ++i)
+        if (buffer[i] == '\n') line_starts_.push_back(i + 1);
+    const pugi::xml_parse_result r =
+        doc_.load_buffer(buffer.data(), buffer.size(), pugi::parse_default | pugi::parse_comments);
+    if (!r) {
+        const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(),
+                                         static_cast<std::size_t>(r.offset));
+        throwInputError(path, static_cast<int>(it - line_starts_.begin()),
+                        std::string("XML parse error: ") + r.description());
+    }
+    if (!doc_.document_element()) throwInputError(path, 1, "no root element");
+}
+
+std::string XmlSource::directory() const {
+    const auto slash = path_.find_last_of('/');
+    return slash == std::string::npos ? std::string(".") : path_.substr(0, slash);
+}
+
+int XmlSource::lineOf(pugi::xml_node node) const {
+    const std::ptrdiff_t off = node.offset_debug();
+    if (off < 0) return 0;
+    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(),
+                                     static_cast<std::size_t>(off));
+    return static_cast<int>(it - line_starts_.begin());
+}
+
+std::string XmlSource::where(pugi::xml_node node) const {
+    return path_ + ":" + std::to_string(lineOf(node));
+}
+
+void XmlSource::fail(pugi::xml_node node, const std::string& message) const {
+    throwInputError(path_, lineOf(node), "<" + std::string(node.name()) + "> " + message);
+}
+
+double XmlSource::number(pugi::xml_node node, const char* attr,
+                         const ExpressionEvaluator& ev) const {
+    const pugi::xml_attribute a = node.attribute(attr);
+    if (!a) fail(node, std::string("requires attribute '") + attr + "' (a number)");
+    const std::string raw = trim(a.value());
+    try {
+        if (!raw.empty() && raw[0] == '#') return ev.evaluate(raw.substr(1));
+        return parseNumber(raw);
+    } catch (const ExpressionError& e) {
+        fail(node, std::string("attribute ") + attr + "=\"" + raw + "\": " + e.what());
+    }
+}
+
+double XmlSource::number(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev,
+                         double fallback) const {
+    if (!node.attribute(attr)) return fallback;
+    return number(node, attr, ev);
+}
+
+int XmlSource::integer(pugi::xml_node node, const char* attr,
+                       const ExpressionEvaluator& ev) const {
+    const double v = number(node, attr, ev);
+    if (v != std::floor(v) || std::fabs(v) > 2.0e9)
+        fail(node, std::string("attribute ") + attr + "=\"" + node.attribute(attr).value() +
+                       "\": expected an integer");
+    return static_cast<int>(v);
+}
+
+int XmlSource::integer(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev,
+                       int fallback) const {
+    if (!node.attribute(attr)) return fallback;
+    return integer(node, attr, ev);
+}
+
+bool XmlSource::boolean(pugi::xml_node node, const char* attr, bool fallback) const {
+    const pugi::xml_attribute a = node.attribute(attr);
+    if (!a) return fallback;
+    const std::string v = lower(trim(a.value()));
+    if (v == "true" || v == "1") return true;
+    if (v == "false" || v == "0") return false;
+    fail(node, std::string("attribute ") + attr + "=\"" + a.value() +
+                   "\": expected true, false, 1 or 0");
+}
+
+std::string XmlSource::text(pugi::xml_node node, const char* attr) const {
+    const pugi::xml_attribute a = node.attribute(attr);
+    if (!a) fail(node, std::string("requires attribute '") + attr + "'");
+    return a.value();
+}
+
+std::string XmlSource::text(pugi::xml_node node, const char* attr,
+                            const std::string& fallback) const {
+    const pugi::xml_attribute a = node.attribute(attr);
+    return a ? std::string(a.value()) : fallback;
+}
+
+Vec3d XmlSource::vec3(pugi::xml_node node, const ExpressionEvaluator& ev) const {
+    return {number(node, "x", ev), number(node, "y", ev), number(node, "z", ev)};
+}
+
+pugi::xml_node XmlSource::child(pugi::xml_node node, const char* name) const {
+    pugi::xml_node c = node.child(name);
+    if (!c) fail(node, std::string("requires a child element <") + name + ">");
+    return c;
+}
+
+bool XmlSource::isDisabled(pugi::xml_node node) {
+    return node.type() != pugi::node_element || node.name()[0] == '_';
+}
+
+void XmlSource::checkAttributes(pugi::xml_node node,
+                                std::initializer_list<const char*> allowed) const {
+    for (pugi::xml_attribute a : node.attributes()) {
+        const std::string name = a.name();
+        if (name.empty() || name[0] == '_' || name == "comment" || name == "units_comment")
+            continue;
+        bool ok = false;
+        for (const char* s : allowed) ok = ok || name == s;
+        if (!ok) {
+            std::string list;
+            for (const char* s : allowed) list += (list.empty() ? "" : ", ") + std::string(s);
+            fail(node, "unknown attribute '" + name + "=\"" + a.value() + "\"' (expected: " +
+                           (list.empty() ? std::string("none") : list) + ")");
+        }
+    }
+}
+
+void XmlSource::checkChildren(pugi::xml_node node,
+                              std::initializer_list<const char*> allowed) const {
+    for (pugi::xml_node c : node.children()) {
+        if (isDisabled(c)) continue;
+        const std::string name = c.name();
+        bool ok = false;
+        for (const char* s : allowed) ok = ok || name == s;
+        if (!ok) {
+            std::string list;
+            for (const char* s : allowed) list += (list.empty() ? "" : ", ") + std::string(s);
+            throwInputError(path_, lineOf(c),
+                            "unknown element <" + name + "> inside <" + node.name() +
+                                "> (expected: " + (list.empty() ? std::string("none") : list) + ")");
+        }
+    }
+}
+
+}  // namespace seaspring::gencase
