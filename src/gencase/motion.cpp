@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "gencase/motion_table.h"
 
 namespace seaspring::gencase {
 
@@ -49,95 +50,6 @@ bool isFileKind(MovementKind k) {
 bool usesAngles(MovementKind k) {
     return k == MovementKind::Rot || k == MovementKind::RotSinu || k == MovementKind::RectSinu ||
            k == MovementKind::RotFile;
-}
-
-/// Text of a double: 17 digits (exact round trip through strtod) or fewer for messages.
-std::string num(double v, int digits = 15) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
-}
-
-bool toNumber(const std::string& s, double& v) {
-    char* end = nullptr;
-    v = std::strtod(s.c_str(), &end);
-    return !s.empty() && end == s.c_str() + s.size() && std::isfinite(v);
-}
-
-/// Splits a data row: fields are separated by blanks and/or one ';' or ','. Two hard
-/// separators in a row (or one at the start) give an empty field; one at the end is allowed.
-std::vector<std::string> splitFields(const std::string& line) {
-    std::vector<std::string> out;
-    bool in_field = false, hard = false;  // hard: a ';' or ',' since the last field
-    for (char ch : line) {
-        const bool sep = ch == ';' || ch == ',';
-        if (sep || std::isspace(static_cast<unsigned char>(ch))) {
-            if (sep && !in_field && (hard || out.empty())) out.emplace_back();
-            hard = (hard && !in_field) || sep;
-            in_field = false;
-        } else {
-            if (!in_field) out.emplace_back();
-            in_field = true;
-            out.back() += ch;
-        }
-    }
-    return out;
-}
-
-/// How to read a data table, and how to name it in messages.
-struct TableSpec {
-    std::string name;    ///< file named in messages
-    int first_line = 1;  ///< number of the stream's first line
-    int min_cols = 2, max_cols = INT_MAX;
-    bool allow_header = true;                ///< a first line that is not all numbers is skipped
-    int tcol = 0, cx = 1, cy = -1, cz = -1;  ///< columns of time and value x,y,z (-1: 0)
-    double factor_x = 1;                     ///< multiplies value.x (angles to radians)
-    std::string expect, origin;  ///< the expected columns; the case element using the data
-};
-
-/// Reads a table; blank lines and '#' lines are skipped, times must increase strictly.
-MotionTable readTable(std::istream& in, const TableSpec& s) {
-    MotionTable t;
-    std::string line;
-    int n = s.first_line - 1, prev_line = 0;
-    bool first = true;
-    while (std::getline(in, line)) {
-        ++n;
-        if (n == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // UTF-8 BOM
-        const std::size_t p = line.find_first_not_of(" \t\r\v\f");
-        if (p == std::string::npos || line[p] == '#') continue;
-        const std::vector<std::string> f = splitFields(line);
-        std::vector<double> v(f.size());
-        std::size_t bad = 0;
-        while (bad < f.size() && toNumber(f[bad], v[bad])) ++bad;
-        const bool header = first && s.allow_header;
-        first = false;
-        if (bad < f.size()) {
-            if (header) continue;
-            throwInputError(s.name, n,
-                            (f[bad].empty() ? std::string("empty value")
-                                            : "value '" + f[bad] + "' is not a finite number") +
-                                " in column " + std::to_string(bad + 1) + " (expected " + s.expect +
-                                ")" + s.origin);
-        }
-        const int cols = static_cast<int>(f.size());
-        if (cols < s.min_cols || cols > s.max_cols)
-            throwInputError(s.name, n,
-                            "found " + std::to_string(cols) + " column(s) in '" + line.substr(p) +
-                                "', expected " + s.expect + s.origin);
-        const double time = v[s.tcol];
-        if (!t.time.empty() && !(time > t.time.back()))
-            throwInputError(s.name, n,
-                            "time " + num(time) + " (column " + std::to_string(s.tcol + 1) +
-                                ") is not greater than the time " + num(t.time.back()) +
-                                " of line " + std::to_string(prev_line) +
-                                ": times must increase strictly" + s.origin);
-        const auto pick = [&](int c) { return c < 0 ? 0.0 : v[c]; };
-        t.time.push_back(time);
-        t.value.push_back({pick(s.cx) * s.factor_x, pick(s.cy), pick(s.cz)});
-        prev_line = n;
-    }
-    return t;
 }
 
 /// Reads one <motion> element: the DualSPHysics definition, or writeMotion's normalized form.

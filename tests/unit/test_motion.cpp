@@ -451,3 +451,27 @@ TEST(Motion, DataFileErrors) {
                          "<axisp2 x=\"0\" y=\"0\" z=\"1\"/></mvrotfile>\n"),
                 {d + "rot1.csv:1", "found 1 column(s)", "'0'", "time, angle"});
 }
+
+#include <sstream>
+
+#include "gencase/motion_table.h"
+
+TEST(MotionTable, HeaderOnlyWhenTheFirstLineHasNoNumber) {
+    using namespace seaspring::gencase;
+    TableSpec spec;
+    spec.name = "data.csv";
+    spec.expect = "2 columns: time, value";
+    std::istringstream header("time;x\n0;1\n1;2\n");
+    const MotionTable t = readTable(header, spec);
+    ASSERT_EQ(t.time.size(), 2u);
+    EXPECT_EQ(t.value[1].x, 2.0);
+    // A first data row with a typo is an error naming the file and line, not a skipped header.
+    std::istringstream typo("0;1x\n1;2\n");
+    try {
+        readTable(typo, spec);
+        FAIL() << "expected an error";
+    } catch (const seaspring::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("data.csv:1"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'1x'"), std::string::npos) << e.what();
+    }
+}
