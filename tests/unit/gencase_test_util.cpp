@@ -2,12 +2,15 @@
 /// \file gencase_test_util.cpp
 #include "gencase_test_util.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "core/error.h"
 
 namespace seaspring::test {
 
@@ -69,6 +72,42 @@ CommandResult runGencase(const std::string& args) {
     const int status = ::pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+std::unique_ptr<gencase::CaseBuilder> buildCaseKeepBuilder(const std::string& def_path,
+                                                           std::ostream& log, double dp) {
+    gencase::GencaseOptions opt;
+    opt.definition = def_path;
+    opt.output_base = fs::path(def_path).parent_path().string() + "/out/Case";
+    opt.dp_override = dp;
+    auto b = std::make_unique<gencase::CaseBuilder>(opt, log);
+    b->build();
+    return b;
+}
+
+std::string buildError(const std::string& def_path, double dp) {
+    try {
+        buildCase(def_path, dp);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+int lineOf(const std::string& text, const std::string& needle) {
+    const std::size_t at = text.find(needle);
+    if (at == std::string::npos) return 0;
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+std::vector<std::string> listFiles(const std::string& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    if (!fs::exists(dir, ec)) return out;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) out.push_back(fs::relative(e.path(), dir).string());
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 }  // namespace seaspring::test

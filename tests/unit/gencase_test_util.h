@@ -4,7 +4,10 @@
 ///        run the gencase binary and capture its exit code and output.
 #pragma once
 
+#include <iosfwd>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "gencase/case_builder.h"
 
@@ -29,5 +32,17 @@ struct CommandResult {
     std::string output;  ///< stdout and stderr together
 };
 CommandResult runGencase(const std::string& args);
+
+/// Builds the case in memory and keeps the builder (for source(), result(), write());
+/// `log` must outlive the builder. Throws seaspring::Error on bad input.
+std::unique_ptr<gencase::CaseBuilder> buildCaseKeepBuilder(const std::string& def_path,
+                                                           std::ostream& log, double dp = 0);
+/// The message of the seaspring::Error that buildCase throws, or "" when it succeeds.
+std::string buildError(const std::string& def_path, double dp = 0);
+/// 1-based line of the first occurrence of `needle` in `text` (0 when absent).
+int lineOf(const std::string& text, const std::string& needle);
+/// Regular files under `dir` (recursive), as paths relative to `dir`, sorted; empty when
+/// `dir` does not exist.
+std::vector<std::string> listFiles(const std::string& dir);
 
 }  // namespace seaspring::test
