@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Quick start 1/2: installs what is missing, builds, and runs the default case
+# Quick start 1/2: installs what is missing, builds, and generates the default case
 # (a small 3D dam break, cases/dambreak3d). Prints where the output is.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -7,7 +7,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/build.sh"
 case_def="$root/cases/dambreak3d/DamBreak3D_Def.xml"
 out="${SEASPRING_OUT:-$root/out/dambreak3d}"
-"$root/build/bin/gencase" "$case_def" "$out/DamBreak3D" -save:vtk
+"${SEASPRING_BUILD_DIR:-$root/build}/bin/gencase" "$case_def" "$out/DamBreak3D" -save:vtk
 echo
 echo "Output: $out"
 echo "  $out/DamBreak3D.xml  resolved case (constants, parameters, particle blocks)"

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <ostream>
 
@@ -48,6 +49,7 @@ const GeneratedCase& CaseBuilder::build() {
     if (pugi::xml_node m = casedef.child("motion")) out_.motion = parseMotion(*src_, m, ev_);
     readExecution(root.child("execution"));
     finishParticles();
+    resolveParameters(root.child("execution").child("parameters"));
     printSummary();
     return out_;
 }
@@ -135,7 +137,6 @@ void CaseBuilder::readExecution(pugi::xml_node execution) {
         }
         out_.solids = parseSolids(*src_, special, ev_, out_.mkconfig, log_);
     }
-    resolveParameters(parameters);
 }
 
 void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
@@ -149,8 +150,15 @@ void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
             const ParameterInfo* info = findParameter(key);
             if (!info) src_->fail(p, "key=\"" + key + "\" is not a known parameter (see docs/case-format.md)");
             if (given.count(key)) src_->fail(p, "key=\"" + key + "\" is given twice");
-            const std::string value = src_->text(p, "value");
-            if (info->kind == ParameterKind::Number) src_->number(p, "value", ev_);  // validates
+            std::string value = src_->text(p, "value");
+            if (info->kind == ParameterKind::Number) {
+                const double v = src_->number(p, "value", ev_);  // validates; '#' expressions
+                if (!value.empty() && value[0] == '#') {       // are written evaluated
+                    char buf[40];
+                    std::snprintf(buf, sizeof buf, "%.17g", v);
+                    value = buf;
+                }
+            }
             if (info->kind == ParameterKind::Deprecated)
                 log_ << "Note: " << src_->where(p) << ": parameter " << key << " is deprecated and ignored\n";
             given[key] = value;
@@ -158,6 +166,11 @@ void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
     }
     for (const ParameterInfo& info : knownParameters()) {
         if (info.kind == ParameterKind::Deprecated) continue;
+        const bool needed = !info.default_value && (std::string(info.key) != "Visco" ||
+                                                    out_.count(ParticleType::Fluid) > 0);
+        if (needed && !given.count(info.key))
+            src_->fail(parameters ? parameters : src_->root(),
+                       std::string("misses the required parameter ") + info.key + " (" + info.meaning + ")");
         const auto it = given.find(info.key);
         if (it != given.end()) out_.parameters.emplace_back(info.key, it->second);
         else if (info.default_value) out_.parameters.emplace_back(info.key, info.default_value);

@@ -76,6 +76,7 @@ CommandRunner::CommandRunner(const XmlSource& src, ExpressionEvaluator& ev, Latt
 void CommandRunner::run(pugi::xml_node commands) {
     commands_ = commands;
     src_.checkChildren(commands, {"list", "mainlist"});
+    for (pugi::xml_node l : commands.children("list")) src_.checkAttributes(l, {"name", "printcall"});
     pugi::xml_node main = src_.child(commands, "mainlist");
     runList(main, 0);
 }
@@ -89,7 +90,7 @@ void CommandRunner::runList(pugi::xml_node list, int depth) {
 void CommandRunner::defineVariables(pugi::xml_node node, bool constant, bool assign) {
     for (pugi::xml_attribute a : node.attributes()) {
         const std::string name = a.name();
-        if (name.empty() || name[0] == '_' || name == "comment") continue;
+        if (name.empty() || name[0] == '_' || name == "comment" || name == "units_comment") continue;
         std::string expr = trimmed(a.value());
         if (!expr.empty() && expr[0] == '#') expr.erase(0, 1);
         double v = 0;
@@ -253,6 +254,7 @@ void CommandRunner::runCommand(pugi::xml_node cmd, int depth) {
         src_.checkAttributes(cmd, {"mode"});
         mode_ = parseDrawMode(src_, cmd);
     } else if (name == "setshapemode") {
+        src_.checkAttributes(cmd, {});
         for (const std::string& w : split(cmd.text().get(), '|'))
             if (w != "actual" && w != "dp" && w != "all" && w != "bound" && w != "fluid" &&
                 w != "void" && w != "null")

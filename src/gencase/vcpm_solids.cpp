@@ -95,6 +95,7 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
     }
     if (pugi::xml_node f = special.child("flexstrucs")) {
         src.checkChildren(f, {"flexstrucbody"});
+        src.checkAttributes(f, {});
         for (pugi::xml_node n : f.children("flexstrucbody")) {
             src.checkAttributes(n, {"mkbound", "mkclamp"});
             src.checkChildren(n, {"density", "youngmod", "poissratio", "constitmodel", "hgfactor"});
@@ -103,6 +104,8 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
             s.declared_in = "flexstrucs";
             s.mkbound = src.integer(n, "mkbound", ev);
             if (n.attribute("mkclamp")) s.clamp_mkbound = parseMkList(src, n, "mkclamp");
+            for (pugi::xml_node c : n.children())
+                if (!XmlSource::isDisabled(c)) src.checkAttributes(c, {"value"});
             s.density = src.number(src.child(n, "density"), "value", ev);
             s.youngmod = src.number(src.child(n, "youngmod"), "value", ev);
             s.poissratio = src.number(src.child(n, "poissratio"), "value", ev);
