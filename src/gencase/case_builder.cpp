@@ -43,6 +43,7 @@ const GeneratedCase& CaseBuilder::build() {
     if (std::string(root.name()) != "case") src_->fail(root, "root element must be <case>");
     src_->checkAttributes(root, {"app", "date"});
     src_->checkChildren(root, {"casedef", "execution"});
+    src_->checkUnique(root, {"casedef", "execution"});
     pugi::xml_node casedef = src_->child(root, "casedef");
     readHeader(casedef);
     drawGeometry(src_->child(casedef, "geometry"));
@@ -64,6 +65,7 @@ void CaseBuilder::readHeader(pugi::xml_node casedef) {
             src_->fail(n, "is not supported by SeaSpring yet (see docs/case-format.md)");
     }
     src_->checkChildren(casedef, {"constantsdef", "mkconfig", "geometry", "motion", "normals"});
+    src_->checkUnique(casedef, {"constantsdef", "mkconfig", "geometry", "motion", "normals"});
     if (pugi::xml_node nm = casedef.child("normals"))
         if (src_->boolean(nm, "active", true))
             src_->fail(nm, "active=\"true\": mDBC normals are not supported yet; set active=\"false\"");
@@ -79,6 +81,7 @@ void CaseBuilder::readHeader(pugi::xml_node casedef) {
     pugi::xml_node geometry = src_->child(casedef, "geometry");
     // Variables of <predefinition> may be used by <constantsdef> and <definition>.
     src_->checkChildren(geometry, {"predefinition", "definition", "commands"});
+    src_->checkUnique(geometry, {"predefinition", "definition", "commands"});
     CommandRunner vars(*src_, ev_, grid_, out_.mkconfig, log_, false);
     if (pugi::xml_node pre = geometry.child("predefinition")) {
         src_->checkChildren(pre, {"newvar", "newvarcte"});
@@ -93,6 +96,7 @@ void CaseBuilder::drawGeometry(pugi::xml_node geometry) {
     pugi::xml_node def = src_->child(geometry, "definition");
     src_->checkAttributes(def, {"dp"});
     src_->checkChildren(def, {"pointref", "pointmin", "pointmax"});
+    src_->checkUnique(def, {"pointref", "pointmin", "pointmax"});
     double dp = src_->number(def, "dp", ev_);
     if (opt_.dp_override > 0) dp = opt_.dp_override;
     if (!(dp > 0)) src_->fail(def, "dp=\"" + std::string(def.attribute("dp").value()) + "\": must be > 0");
@@ -124,10 +128,12 @@ void CaseBuilder::readExecution(pugi::xml_node execution) {
     pugi::xml_node special, parameters;
     if (execution) {
         src_->checkChildren(execution, {"special", "parameters"});
+        src_->checkUnique(execution, {"special", "parameters"});
         special = execution.child("special");
         parameters = execution.child("parameters");
     }
     if (special) {
+        src_->checkUnique(special, {"vcpmsolids", "flexstrucs", "gauges", "savedt"});
         for (pugi::xml_node n : special.children()) {
             if (XmlSource::isDisabled(n)) continue;
             const std::string name = n.name();
@@ -143,6 +149,7 @@ void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
     std::map<std::string, std::string> given;
     if (parameters) {
         src_->checkChildren(parameters, {"parameter", "simulationdomain"});
+        src_->checkUnique(parameters, {"simulationdomain"});
         for (pugi::xml_node p : parameters.children("parameter")) {
             src_->checkAttributes(p, {"key", "value"});
             const std::string key = src_->text(p, "key");

@@ -157,7 +157,22 @@ void writeGeneratedCase(const XmlSource& src, const GeneratedCase& g, const std:
         buildResolvedCase(doc, src, g, name + ".h5");
         if (!doc.save_file(outputs.back().part.c_str(), "  "))
             throw Error("cannot write " + outputs.back().part);
-        for (const Output& o : outputs) fs::rename(o.part, o.final_path);
+        // Only plain files (or nothing) may stand where the outputs go, so that the renames
+        // below cannot fail half-way and leave a partial set.
+        for (const Output& o : outputs)
+            if (fs::exists(o.final_path) && !fs::is_regular_file(o.final_path))
+                throw Error(o.final_path + ": exists and is not a regular file; remove it or choose another output name");
+        std::vector<std::string> renamed;
+        try {
+            for (const Output& o : outputs) {
+                fs::rename(o.part, o.final_path);
+                renamed.push_back(o.final_path);
+            }
+        } catch (...) {
+            std::error_code ec;
+            for (const std::string& f : renamed) fs::remove(f, ec);
+            throw;
+        }
     } catch (...) {
         cleanup();
         throw;

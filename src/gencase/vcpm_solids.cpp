@@ -51,7 +51,11 @@ void validate(const XmlSource& src, pugi::xml_node n, SolidSpec& s, const MkConf
 
 std::vector<int> parseMkList(const XmlSource& src, pugi::xml_node node, const char* attr) {
     std::vector<int> out;
-    std::stringstream ss(trimAll(src.text(node, attr)));
+    const std::string text = trimAll(src.text(node, attr));
+    if (text.empty() || text.front() == ',' || text.back() == ',' || text.find(",,") != std::string::npos)
+        src.fail(node, std::string(attr) + "=\"" + node.attribute(attr).value() +
+                           "\": expected MK numbers like \"1\" or \"0,2-3\" (an item is empty)");
+    std::stringstream ss(text);
     std::string item;
     while (std::getline(ss, item, ',')) {
         const auto dash = item.find('-');

@@ -185,4 +185,16 @@ void XmlSource::checkChildren(pugi::xml_node node,
     }
 }
 
+void XmlSource::checkUnique(pugi::xml_node node, std::initializer_list<const char*> unique) const {
+    for (const char* name : unique) {
+        pugi::xml_node first = node.child(name);
+        if (!first) continue;
+        for (pugi::xml_node n = first.next_sibling(name); n; n = n.next_sibling(name))
+            throwInputError(path_, lineOf(n),
+                            "<" + std::string(name) + "> appears twice inside <" + node.name() +
+                                "> (first at line " + std::to_string(lineOf(first)) +
+                                "): merge them into one");
+    }
+}
+
 }  // namespace seaspring::gencase

@@ -58,6 +58,10 @@ public:
     /// Rejects child elements not in `allowed` (names starting with '_' are skipped).
     void checkChildren(pugi::xml_node node, std::initializer_list<const char*> allowed) const;
 
+    /// Rejects a second occurrence of any of the `unique` child elements (a repeated section
+    /// would otherwise be silently ignored).
+    void checkUnique(pugi::xml_node node, std::initializer_list<const char*> unique) const;
+
     /// True for elements that GenCase treats as commented out (name starts with '_').
     static bool isDisabled(pugi::xml_node node);
 

@@ -13,7 +13,8 @@
 
 namespace seaspring::test {
 
-/// A fresh scratch directory under the system temp directory (removed at exit of the test).
+/// A fresh scratch directory under the system temp directory (emptied when created again;
+/// left in place afterwards for inspection).
 std::string scratchDir(const std::string& tag);
 /// Writes `text` to dir/name and returns the path.
 std::string writeFile(const std::string& dir, const std::string& name, const std::string& text);

@@ -62,7 +62,9 @@ TEST(GencaseCommands, ParticlesAreOrderedByBlockMkAndLattice) {
     const ParticleSet& p = g.particles;
     for (std::size_t i = 1; i < p.size(); ++i) {
         ASSERT_LE(p.type[i - 1], p.type[i]);
-        if (p.type[i - 1] == p.type[i]) ASSERT_LE(p.mk[i - 1], p.mk[i]);
+        if (p.type[i - 1] == p.type[i]) {
+            ASSERT_LE(p.mk[i - 1], p.mk[i]);
+        }
         if (p.mk[i - 1] == p.mk[i]) {  // x fastest, then y, then z
             const Vec3d a = p.pos[i - 1], b = p.pos[i];
             ASSERT_TRUE(a.z < b.z || (a.z == b.z && (a.y < b.y || (a.y == b.y && a.x < b.x))));

@@ -201,22 +201,18 @@ TEST(GencaseSolids, ResolvedCaseListsTheSolidsAndCounts) {
     const pugi::xml_node exec = doc.child("case").child("execution");
     const pugi::xml_node v = exec.child("vcpmsolids");
     ASSERT_TRUE(v);
-    EXPECT_EQ(v.attribute("particles").as_ullong(), 20u);
-    EXPECT_EQ(v.attribute("bonds").as_ullong(), 78u);
-    EXPECT_EQ(v.attribute("clampbonds").as_ullong(), 20u);
-    EXPECT_EQ(v.attribute("surface").as_ullong(), 20u);
-    EXPECT_EQ(v.attribute("bondslots").as_ullong(), 176u);
+    const std::pair<const char*, unsigned> counts[] = {
+        {"particles", 20}, {"bonds", 78}, {"clampbonds", 20}, {"surface", 20}, {"bondslots", 176}};
+    for (const auto& [name, value] : counts) EXPECT_EQ(v.attribute(name).as_uint(), value) << name;
     const pugi::xml_node s = v.child("solid");
     ASSERT_TRUE(s);
     EXPECT_FALSE(s.next_sibling("solid"));
     EXPECT_EQ(s.attribute("mkbound").as_int(), 1);
     EXPECT_EQ(s.attribute("mk").as_int(), 11);
     EXPECT_STREQ(s.attribute("mkclamp").value(), "0");
-    EXPECT_EQ(s.attribute("density").as_double(), 2500);
-    EXPECT_EQ(s.attribute("youngmod").as_double(), 3e6);
-    EXPECT_EQ(s.attribute("poissratio").as_double(), 0.3);
-    EXPECT_EQ(s.attribute("critstretch").as_double(), 0.01);
-    EXPECT_EQ(s.attribute("damping").as_double(), 1);
+    const std::pair<const char*, double> material[] = {
+        {"density", 2500}, {"youngmod", 3e6}, {"poissratio", 0.3}, {"critstretch", 0.01}, {"damping", 1}};
+    for (const auto& [name, value] : material) EXPECT_EQ(s.attribute(name).as_double(), value) << name;
     EXPECT_STREQ(s.attribute("declaredin").value(), "vcpmsolids");
     EXPECT_EQ(s.attribute("particles").as_ullong(), 20u);
     const pugi::xml_node parts = exec.child("particles");
@@ -325,51 +321,53 @@ TEST(GencaseSolids, FlexstrucBodyWithMvnullBecomesASolid) {
 
 // ---- Errors: the message names the file, the line of the offending element and the value.
 
-TEST(GencaseSolidsErrors, SolidMkWithoutParticles) {
-    const CaseFile c = writeCase("err_noparticles", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"5\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n</vcpmsolids>");
+namespace {
+
+/// `<vcpmsolids>` with one `<solid ATTRS/>` per entry, each on its own line.
+std::string solids(std::initializer_list<const char*> attrs) {
+    std::string out = "<vcpmsolids>\n";
+    for (const char* a : attrs) out += std::string("<solid ") + a + "/>\n";
+    return out + "</vcpmsolids>";
+}
+
+/// Building `c` throws seaspring::Error; its message holds "path:LINE:" (LINE: first line of
+/// the case holding `needle`) and each of `parts`.
+void expectBuildError(const CaseFile& c, const std::string& needle,
+                      std::initializer_list<std::string> parts) {
     EXPECT_THROW(test::buildCase(c.path), Error);
     const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("solid mkbound=5 has no particles"), std::string::npos) << m;
+    EXPECT_NE(m.find(at(c, needle)), std::string::npos) << m;
+    for (const std::string& p : parts) EXPECT_NE(m.find(p), std::string::npos) << "'" << p << "' in " << m;
+}
+
+}  // namespace
+
+TEST(GencaseSolidsErrors, SolidMkWithoutParticles) {
+    const CaseFile c = writeCase("err_noparticles", kCantilever,
+        solids({"mkbound=\"5\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\""}));
+    expectBuildError(c, "<solid ", {"solid mkbound=5 has no particles"});
 }
 
 TEST(GencaseSolidsErrors, ClampMkWithoutParticles) {
     const CaseFile c = writeCase("err_noclamp", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"7\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n</vcpmsolids>");
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("mkclamp 7 does not exist"), std::string::npos) << m;
+        solids({"mkbound=\"1\" mkclamp=\"7\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\""}));
+    expectBuildError(c, "<solid ", {"mkclamp 7 does not exist"});
 }
 
 TEST(GencaseSolidsErrors, PoissonRatioHalfIsRejected) {
     const CaseFile c = writeCase("err_poisson", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.5\"/>\n</vcpmsolids>");
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("<solid> poissratio=0.5"), std::string::npos) << m;
-    EXPECT_NE(m.find("(-1, 0.5)"), std::string::npos) << m;
+        solids({"mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.5\""}));
+    expectBuildError(c, "<solid ", {"<solid> poissratio=0.5", "must lie in (-1, 0.5)"});
 }
 
 TEST(GencaseSolidsErrors, ZeroYoungModulusIsRejected) {
     const CaseFile c = writeCase("err_young", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"0\" poissratio=\"0.3\"/>\n</vcpmsolids>");
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("youngmod=0"), std::string::npos) << m;
-    EXPECT_NE(m.find("must be > 0"), std::string::npos) << m;
-}
-
-TEST(GencaseSolidsErrors, FlexstrucBodyZeroYoungModulusIsRejected) {
-    const CaseFile c = writeCase("err_flexyoung", kCantilever,
+        solids({"mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"0\" poissratio=\"0.3\""}));
+    expectBuildError(c, "<solid ", {"<solid> youngmod=0", "must be > 0"});
+    const CaseFile f = writeCase("err_flexyoung", kCantilever,
         "<flexstrucs>\n<flexstrucbody mkbound=\"1\" mkclamp=\"0\"><density value=\"1000\"/>"
         "<youngmod value=\"0\"/><poissratio value=\"0.3\"/></flexstrucbody>\n</flexstrucs>");
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<flexstrucbody")), std::string::npos) << m;
-    EXPECT_NE(m.find("youngmod=0"), std::string::npos) << m;
+    expectBuildError(f, "<flexstrucbody", {"<flexstrucbody> youngmod=0", "must be > 0"});
 }
 
 TEST(GencaseSolidsErrors, SolidWithPrescribedMotionIsRejected) {
@@ -377,13 +375,9 @@ TEST(GencaseSolidsErrors, SolidWithPrescribedMotionIsRejected) {
         "<motion>\n<objreal ref=\"1\"><begin mov=\"1\" start=\"0\"/><mvrect id=\"1\" duration=\"1\">"
         "<vel x=\"1\" y=\"0\" z=\"0\"/></mvrect></objreal>\n</motion>";
     const CaseFile c = writeCase("err_motion", kCantilever, kCantileverSolid, motion);
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("solid mkbound=1 has a prescribed motion (line " +
-                     std::to_string(test::lineOf(c.text, "<objreal")) + ")"),
-              std::string::npos) << m;
-    EXPECT_NE(m.find("only mvnull is allowed"), std::string::npos) << m;
+    expectBuildError(c, "<solid ", {"solid mkbound=1 has a prescribed motion (line " +
+                                        std::to_string(test::lineOf(c.text, "<objreal")) + ")",
+                                    "only mvnull is allowed"});
 }
 
 TEST(GencaseSolidsErrors, ClampNamingAnotherSolid) {
@@ -391,71 +385,59 @@ TEST(GencaseSolidsErrors, ClampNamingAnotherSolid) {
         "<setmkbound mk=\"2\"/><drawbox><boxfill>solid</boxfill><point x=\"0.6\" y=\"0\" z=\"0\"/>"
         "<size x=\"0.2\" y=\"0.1\" z=\"0.1\"/></drawbox>";
     const CaseFile c = writeCase("err_clampsolid", mainlist,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n"
-        "<solid mkbound=\"2\" mkclamp=\"1\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n</vcpmsolids>");
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid mkbound=\"2\"")), std::string::npos) << m;
-    EXPECT_NE(m.find("mkclamp 1 is itself a solid"), std::string::npos) << m;
+        solids({"mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"",
+                "mkbound=\"2\" mkclamp=\"1\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\""}));
+    expectBuildError(c, "<solid mkbound=\"2\"", {"mkclamp 1 is itself a solid"});
 }
 
 TEST(GencaseSolidsErrors, ClampNamingItself) {
     const CaseFile c = writeCase("err_clampself", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0,1\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n</vcpmsolids>");
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("mkclamp names the solid's own mkbound 1"), std::string::npos) << m;
+        solids({"mkbound=\"1\" mkclamp=\"0,1\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\""}));
+    expectBuildError(c, "<solid ", {"mkclamp names the solid's own mkbound 1"});
 }
 
 TEST(GencaseSolidsErrors, DuplicateSolidMkbound) {
     const CaseFile c = writeCase("err_duplicate", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n"
-        "<solid mkbound=\"1\" density=\"1000\" youngmod=\"1e6\" poissratio=\"0.2\"/>\n</vcpmsolids>");
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<solid mkbound=\"1\" density")), std::string::npos) << m;
-    EXPECT_NE(m.find("solid mkbound=1 is declared twice (first at line " +
-                     std::to_string(test::lineOf(c.text, "<solid mkbound=\"1\" mkclamp")) + ")"),
-              std::string::npos) << m;
-}
-
-TEST(GencaseSolidsErrors, DuplicateAcrossVcpmsolidsAndFlexstrucs) {
-    const CaseFile c = writeCase("err_duplicate2", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n"
-        "</vcpmsolids><flexstrucs>\n<flexstrucbody mkbound=\"1\"><density value=\"1000\"/>"
+        solids({"mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"",
+                "mkbound=\"1\" density=\"1000\" youngmod=\"1e6\" poissratio=\"0.2\""}));
+    expectBuildError(c, "<solid mkbound=\"1\" density",
+                     {"solid mkbound=1 is declared twice (first at line " +
+                      std::to_string(test::lineOf(c.text, "<solid mkbound=\"1\" mkclamp")) + ")"});
+    const CaseFile f = writeCase("err_duplicate2", kCantilever,
+        std::string(kCantileverSolid) + "<flexstrucs>\n<flexstrucbody mkbound=\"1\"><density value=\"1000\"/>"
         "<youngmod value=\"1e6\"/><poissratio value=\"0.3\"/></flexstrucbody>\n</flexstrucs>");
-    const std::string m = test::buildError(c.path);
-    EXPECT_NE(m.find(at(c, "<flexstrucbody")), std::string::npos) << m;
-    EXPECT_NE(m.find("solid mkbound=1 is declared twice"), std::string::npos) << m;
+    expectBuildError(f, "<flexstrucbody", {"solid mkbound=1 is declared twice"});
 }
 
 TEST(GencaseSolidsErrors, IsolatedSolidParticle) {
-    // drawbox of size 0: one solid particle at (2, 2, 2) with no lattice neighbour.
+    // drawbox of size 0: one solid particle (mkbound 3 -> mk 3 + 9 + 1 = 13) at (2, 2, 2) with
+    // no lattice neighbour. Reported at <special>: the bond builder does not know the <solid>.
     const std::string mainlist = std::string(kCantilever) +
         "<setmkbound mk=\"3\"/><drawbox><boxfill>solid</boxfill><point x=\"2\" y=\"2\" z=\"2\"/>"
         "<size x=\"0\" y=\"0\" z=\"0\"/></drawbox>";
     const CaseFile c = writeCase("err_isolated", mainlist,
-        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n"
-        "<solid mkbound=\"3\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"/>\n</vcpmsolids>");
-    EXPECT_THROW(test::buildCase(c.path), Error);
-    const std::string m = test::buildError(c.path);
-    // Reported at <special> (the bond builder does not know which <solid> it came from).
-    EXPECT_NE(m.find(at(c, "<special>")), std::string::npos) << m;
-    EXPECT_NE(m.find("1 solid particle(s) have no bond at all"), std::string::npos) << m;
-    EXPECT_NE(m.find("at (2, 2, 2)"), std::string::npos) << m;
-    EXPECT_NE(m.find("mk 13"), std::string::npos) << m;  // mkbound 3 -> 3 + 9 + 1
+        solids({"mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\"",
+                "mkbound=\"3\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\""}));
+    expectBuildError(c, "<special>", {"1 solid particle(s) have no bond at all", "mk 13", "at (2, 2, 2)"});
 }
 
 TEST(GencaseSolidsErrors, UnknownAttributeAndChild) {
     const CaseFile a = writeCase("err_attr", kCantilever,
-        "<vcpmsolids>\n<solid mkbound=\"1\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\" stiffness=\"2\"/>\n</vcpmsolids>");
-    std::string m = test::buildError(a.path);
-    EXPECT_NE(m.find(at(a, "<solid ")), std::string::npos) << m;
-    EXPECT_NE(m.find("unknown attribute 'stiffness=\"2\"'"), std::string::npos) << m;
+        solids({"mkbound=\"1\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\" stiffness=\"2\""}));
+    expectBuildError(a, "<solid ", {"unknown attribute 'stiffness=\"2\"'"});
     const CaseFile b = writeCase("err_child", kCantilever,
         "<flexstrucs><flexstrucbody mkbound=\"1\"><density value=\"1000\"/><youngmod value=\"1e6\"/>"
         "<poissratio value=\"0.3\"/>\n<thickness value=\"1\"/></flexstrucbody></flexstrucs>");
-    m = test::buildError(b.path);
-    EXPECT_NE(m.find(at(b, "<thickness")), std::string::npos) << m;
-    EXPECT_NE(m.find("unknown element <thickness> inside <flexstrucbody>"), std::string::npos) << m;
+    expectBuildError(b, "<thickness", {"unknown element <thickness> inside <flexstrucbody>"});
+}
+
+// Regression: a second <vcpmsolids> block is an error, not ignored.
+TEST(GencaseSolidsErrors, SecondVcpmsolidsBlockIsNotIgnored) {
+    const CaseFile c = writeCase("err_second_block", kCantilever,
+        std::string(kCantileverSolid) +
+        "\n<vcpmsolids><solid mkbound=\"3\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.7\"/></vcpmsolids>");
+    const std::string m = test::buildError(c.path);
+    EXPECT_NE(m, "") << "a second <vcpmsolids> was silently ignored";
+    EXPECT_NE(m.find(c.path + ":" + std::to_string(test::lineOf(c.text, "<solid mkbound=\"3\""))),
+              std::string::npos) << m;
 }
