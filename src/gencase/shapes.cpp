@@ -149,11 +149,7 @@ std::size_t drawCylinder(LatticeGrid& g, const Affine& m, Vec3d p1, Vec3d p2, do
     SEASPRING_CHECK(len > 0 && radius > 0, "cylinder needs distinct points and a positive radius");
     const Vec3d u = (1.0 / len) * axis;
     const double h = 0.5 * g.dp(), pad = radius + g.dp();
-    Vec3d wlo, whi;
-    const Vec3d a = m.apply(p1), b = m.apply(p2);
-    transformedBounds(Affine{}, {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)},
-                      {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}, wlo, whi);
-    const IndexBox range = worldRange(g, wlo, whi, pad);
+    const IndexBox range = worldRange(g, m.apply(p1), m.apply(p2), pad);  // axis ends, padded by R
     return paint(g, range, m.inverse(), value, [&](Vec3d local) {
         const Vec3d d = local - p1;
         const double t = dot(d, u);
