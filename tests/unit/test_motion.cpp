@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -22,11 +24,24 @@ namespace {
 
 const double kPi = 3.14159265358979323846;
 
+/// Removes the scratch directory when the test process ends.
+struct ScratchCleanup {
+    std::string dir;
+    ~ScratchCleanup() {
+        std::error_code ec;
+        if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+    }
+};
+
 std::string tmpDir() {
+    static ScratchCleanup cleanup;
     static const std::string dir = [] {
-        const std::string d = ::testing::TempDir() + "seaspring_test_motion";
+        // One directory per process: ctest runs each test case as its own process, in parallel.
+        const std::string d =
+            ::testing::TempDir() + "seaspring_test_motion_" + std::to_string(::getpid());
         ::mkdir(d.c_str(), 0755);
         ::mkdir((d + "/sub").c_str(), 0755);
+        cleanup.dir = d;
         return d;
     }();
     return dir;
