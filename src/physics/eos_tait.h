@@ -15,6 +15,15 @@ SEASPRING_HD inline double taitB(double c0, double rho0, double gamma) {
     return c0 * c0 * rho0 / gamma;
 }
 
+/// Tait pressure with gamma = 7 [Pa], evaluated in float by repeated products (bit-identical on
+/// every backend): p = B ((rho/rho0)^7 - 1); `ovrho0` = 1/rho0.
+SEASPRING_HD inline float taitPressure7(float rho, float b, float ovrho0) {
+    const float x = rho * ovrho0;
+    const float x2 = x * x;
+    const float x3 = x2 * x;
+    return b * ((x3 * x3 * x) - 1.f);
+}
+
 /// Density [kg/m^3] at which the Tait pressure equals rho0*g*depth (hydrostatic column of
 /// `depth` metres under gravity magnitude g): rho = rho0 (1 + rho0 g depth / B)^(1/gamma).
 /// Used for initial conditions only (library pow: not part of the bit-identical step).

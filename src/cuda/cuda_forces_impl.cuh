@@ -1,0 +1,73 @@
+// SeaSpring — MIT licence.
+/// \file cuda_forces_impl.cuh
+/// \brief The CUDA force driver for one option set: one thread per particle calling the
+///        shared per-particle interaction, the SPS stress, and a two-stage max reduction of
+///        the dt maxima (exact, so deterministic).
+#pragma once
+
+#include "cuda/cuda_arrays.cuh"
+#include "cuda/cuda_check.cuh"
+#include "physics/fluid_interaction.h"
+
+namespace seaspring::cuda {
+
+constexpr int kForceThreads = 128;
+
+template <class Opt>
+__global__ void __launch_bounds__(kForceThreads)
+fluidForcesKernel(std::uint32_t nbound, std::uint32_t np, physics::InteractionInputs in,
+                  physics::FluidConstants c, physics::CellGrid g, physics::ParticleView v) {
+    const std::uint32_t i = nbound + blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= np) return;
+    const physics::FluidAccum acc = physics::fluidParticleForces<Opt>(i, in, c, g);
+    v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
+    v.visc[i] = acc.visc;
+    if (Opt::sps) v.gradvel[i] = acc.gradvel;
+}
+
+template <class Opt>
+__global__ void __launch_bounds__(kForceThreads)
+boundForcesKernel(std::uint32_t nbound, physics::InteractionInputs in, physics::FluidConstants c,
+                  physics::CellGrid g, physics::ParticleView v) {
+    const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= nbound) return;
+    float ar, visc;
+    physics::boundParticleForces<Opt>(i, in, c, g, ar, visc);
+    v.acear[i] = physics::Float4{0.f, 0.f, 0.f, ar};
+    v.visc[i] = visc;
+}
+
+__global__ void spsTauKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v, float smag,
+                             float blin);
+__global__ void dtMaximaBlocksKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v,
+                                     physics::DtMaxima* out);
+__global__ void dtMaximaFinalKernel(std::uint32_t nblocks, const physics::DtMaxima* in, physics::DtMaxima* out);
+
+/// Everything after the pair loops (shared by all option sets; cuda_backend.cu).
+physics::DtMaxima finishForces(bool sps, DeviceArrays& a, std::uint32_t nbound, std::uint32_t np,
+                               const physics::FluidConstants& c);
+
+template <class Opt>
+physics::DtMaxima cudaForcesFor(DeviceArrays& a, std::uint32_t nbound, std::uint32_t nfluid,
+                                const physics::FluidConstants& c, const physics::CellGrid& g) {
+    physics::InteractionInputs in;
+    in.poscell = a.v.poscell;
+    in.velrho = a.v.velrho;
+    in.cell_start_bound = a.cell_start_bound;
+    in.cell_start_fluid = a.cell_start_fluid;
+    in.tau = Opt::sps ? a.v.tau : nullptr;
+    const std::uint32_t np = nbound + nfluid;
+    if (nfluid > 0) {
+        fluidForcesKernel<Opt><<<(nfluid + kForceThreads - 1) / kForceThreads, kForceThreads>>>(
+            nbound, np, in, c, g, a.v);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+    }
+    if (nbound > 0) {
+        boundForcesKernel<Opt><<<(nbound + kForceThreads - 1) / kForceThreads, kForceThreads>>>(
+            nbound, in, c, g, a.v);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+    }
+    return finishForces(Opt::sps, a, nbound, np, c);
+}
+
+}  // namespace seaspring::cuda

@@ -1,0 +1,109 @@
+// SeaSpring — MIT licence.
+/// \file cell_grid.h
+/// \brief The cell grid of the neighbour search and the cell-relative float positions
+///        ("PosCell", as DualSPHysics) used by every pair interaction.
+///
+/// Cells are cubes of size 2h/cell_div over the simulation domain (x fastest). A particle's
+/// PosCell is (x - ox, y - oy, z - oz, packed cell coordinates) with (ox, oy, oz) its cell's
+/// origin: offsets stay small, so float pair distances keep double-like accuracy in long
+/// domains. Pair distance: (local_a - local_b) + cellsize * (cell_a - cell_b), exact in the
+/// cell difference whatever cell a particle was assigned to.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/host_device.h"
+#include "physics/sph_types.h"
+
+namespace seaspring::physics {
+
+struct CellGrid {
+    double minx = 0, miny = 0, minz = 0;  ///< domain minimum [m]
+    double cellsize = 0;                   ///< [m]
+    float cellsizef = 0;                   ///< float(cellsize)
+    int ncx = 1, ncy = 1, ncz = 1;         ///< cells per axis
+    int range = 1;                         ///< cells searched on each side (= cell_div)
+    std::uint32_t bitsx = 1, bitsy = 1;    ///< packed cell: cx | cy << bitsx | cz << (bitsx+bitsy)
+    std::uint32_t maskx = 1, masky = 1;
+
+    SEASPRING_HD std::uint32_t cellCount() const {
+        return std::uint32_t(ncx) * std::uint32_t(ncy) * std::uint32_t(ncz);
+    }
+    SEASPRING_HD std::uint32_t linear(int cx, int cy, int cz) const {
+        return std::uint32_t(cx) + std::uint32_t(ncx) * (std::uint32_t(cy) + std::uint32_t(ncy) * std::uint32_t(cz));
+    }
+};
+
+/// Cell coordinates of a position, clamped to the grid.
+SEASPRING_HD inline void cellOf(const CellGrid& g, const Double3& p, int& cx, int& cy, int& cz) {
+    const double fx = floor((p.x - g.minx) / g.cellsize);
+    const double fy = floor((p.y - g.miny) / g.cellsize);
+    const double fz = floor((p.z - g.minz) / g.cellsize);
+    cx = fx < 0.0 ? 0 : (fx >= double(g.ncx) ? g.ncx - 1 : int(fx));
+    cy = fy < 0.0 ? 0 : (fy >= double(g.ncy) ? g.ncy - 1 : int(fy));
+    cz = fz < 0.0 ? 0 : (fz >= double(g.ncz) ? g.ncz - 1 : int(fz));
+}
+
+/// The PosCell of a position: offsets from its cell's origin and the packed cell.
+SEASPRING_HD inline Float4 makePosCell(const CellGrid& g, const Double3& p, std::uint32_t& linear_cell) {
+    int cx, cy, cz;
+    cellOf(g, p, cx, cy, cz);
+    linear_cell = g.linear(cx, cy, cz);
+    Float4 r;
+    r.x = float(p.x - (g.minx + double(cx) * g.cellsize));
+    r.y = float(p.y - (g.miny + double(cy) * g.cellsize));
+    r.z = float(p.z - (g.minz + double(cz) * g.cellsize));
+    const std::uint32_t packed = std::uint32_t(cx) | (std::uint32_t(cy) << g.bitsx) |
+                                 (std::uint32_t(cz) << (g.bitsx + g.bitsy));
+    r.w = uintBitsToFloat(packed);
+    return r;
+}
+
+SEASPRING_HD inline int packedCellX(const CellGrid& g, float w) {
+    return int(floatBitsToUint(w) & g.maskx);
+}
+SEASPRING_HD inline int packedCellY(const CellGrid& g, float w) {
+    return int((floatBitsToUint(w) >> g.bitsx) & g.masky);
+}
+SEASPRING_HD inline int packedCellZ(const CellGrid& g, float w) {
+    return int(floatBitsToUint(w) >> (g.bitsx + g.bitsy));
+}
+
+/// Sort key: cell then particle id for active particles; excluded particles after all cells
+/// (still ordered by id). Keys are unique, so any correct sort gives the same order.
+constexpr std::uint64_t kExcludedCell = 0xFFFFFFFFull;
+SEASPRING_HD inline std::uint64_t sortKey(std::uint32_t linear_cell, std::uint32_t id, bool excluded) {
+    const std::uint64_t cell = excluded ? kExcludedCell : std::uint64_t(linear_cell);
+    return (cell << 32) | std::uint64_t(id);
+}
+
+/// Builds the grid over [min, max] with cells of size 2h/cell_div (host only).
+/// Returns false when the packed cell does not fit 32 bits or there are too many cells.
+inline bool makeCellGrid(double minx, double miny, double minz, double maxx, double maxy,
+                         double maxz, double h, int cell_div, CellGrid& g) {
+    g.minx = minx;
+    g.miny = miny;
+    g.minz = minz;
+    g.cellsize = 2.0 * h / double(cell_div);
+    g.cellsizef = float(g.cellsize);
+    g.range = cell_div;
+    auto count = [&](double lo, double hi) { return int(std::floor((hi - lo) / g.cellsize)) + 1; };
+    g.ncx = count(minx, maxx);
+    g.ncy = count(miny, maxy);
+    g.ncz = count(minz, maxz);
+    auto bits = [](int n) {
+        std::uint32_t b = 1;
+        while ((1u << b) < std::uint32_t(n)) ++b;
+        return b;
+    };
+    g.bitsx = bits(g.ncx);
+    g.bitsy = bits(g.ncy);
+    const std::uint32_t bitsz = bits(g.ncz);
+    g.maskx = (1u << g.bitsx) - 1u;
+    g.masky = (1u << g.bitsy) - 1u;
+    const double cells = double(g.ncx) * double(g.ncy) * double(g.ncz);
+    return g.bitsx + g.bitsy + bitsz <= 32 && cells < 4.0e9 - 2.0;
+}
+
+}  // namespace seaspring::physics

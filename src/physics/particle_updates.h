@@ -1,0 +1,175 @@
+// SeaSpring — MIT licence.
+/// \file particle_updates.h
+/// \brief Everything a time step does to one particle, as functions of the particle index over
+///        a view of the sorted arrays. The CPU driver calls them from OpenMP loops, the CUDA
+///        driver from one thread per index: one source for both backends.
+///
+/// Sorted layout: [0, nbound) boundary block (fixed, then moving, by cell then id),
+/// [nbound, nbound + nfluid) active fluid (by cell then id), then excluded fluid (by id).
+#pragma once
+
+#include <cstdint>
+
+#include "physics/cell_grid.h"
+#include "physics/time_integration.h"
+#include "physics/viscosity.h"
+
+namespace seaspring::physics {
+
+/// Device or host pointers to the per-particle arrays (sorted order).
+struct ParticleView {
+    std::uint32_t* id = nullptr;
+    Double3* pos = nullptr;
+    Float4* velrho = nullptr;
+    std::uint8_t* excl = nullptr;       ///< ExclusionReason
+    Float4* poscell = nullptr;
+    Double3* pos_pre = nullptr;         ///< symplectic: position at the start of the step
+    Float4* velrho_pre = nullptr;       ///< symplectic: state at step start; Verlet: state at n-1
+    Float4* acear = nullptr;            ///< force evaluation: (ax, ay, az, ar)
+    float* visc = nullptr;              ///< force evaluation: viscous dt measure
+    SymTensor* tau = nullptr;           ///< SPS: stress/rho (persistent)
+    SymTensor* gradvel = nullptr;       ///< SPS: velocity gradient of the last force evaluation
+    std::uint64_t* keys = nullptr;      ///< sort keys
+    std::uint32_t* perm = nullptr;      ///< sort permutation (sorted index -> previous index)
+};
+
+/// Sort key of particle i (cell of its position, excluded ones last).
+SEASPRING_HD inline std::uint64_t sortKeyAt(std::uint32_t i, const ParticleView& v, const CellGrid& g) {
+    int cx, cy, cz;
+    cellOf(g, v.pos[i], cx, cy, cz);
+    return sortKey(g.linear(cx, cy, cz), v.id[i], v.excl[i] != kActive);
+}
+
+/// cell_start[c] = first index in [b, e) whose cell >= c. Particle k (b <= k < e, sorted
+/// keys) writes the entries from just after the previous particle's cell up to its own;
+/// cellStartOuterAt writes the entries before the first and after the last particle's cell.
+/// Integer only, so any execution order gives the same array.
+SEASPRING_HD inline void cellStartFillAt(std::uint32_t k, std::uint32_t b, const std::uint64_t* keys,
+                                         std::uint32_t* cell_start) {
+    const std::uint32_t cell = std::uint32_t(keys[k] >> 32);
+    const std::uint32_t first = k == b ? cell : std::uint32_t(keys[k - 1] >> 32) + 1u;
+    for (std::uint32_t c = first; c <= cell; ++c) cell_start[c] = k;
+}
+/// Entry c (0 <= c <= ncells) if it lies outside the cells of [b, e).
+SEASPRING_HD inline void cellStartOuterAt(std::uint32_t c, std::uint32_t b, std::uint32_t e,
+                                          const std::uint64_t* keys, std::uint32_t* cell_start) {
+    if (b == e) {
+        cell_start[c] = e;
+        return;
+    }
+    if (c <= std::uint32_t(keys[b] >> 32)) cell_start[c] = b;
+    else if (c > std::uint32_t(keys[e - 1] >> 32)) cell_start[c] = e;
+}
+
+/// PosCell of particle i.
+SEASPRING_HD inline void posCellAt(std::uint32_t i, const ParticleView& v, const CellGrid& g) {
+    std::uint32_t cell;
+    v.poscell[i] = makePosCell(g, v.pos[i], cell);
+}
+
+/// A rigid motion x = R x0 + t (double), and the velocity over the coming interval.
+struct RigidMotionGpu {
+    double r[9];
+    double t[3];
+    double r_next[9];  ///< pose at the end of the interval, for the velocity
+    double t_next[3];
+    double inv_dt;     ///< 1 / interval
+};
+
+SEASPRING_HD inline Double3 applyRigid(const double* r, const double* t, const Double3& p) {
+    return {r[0] * p.x + r[1] * p.y + r[2] * p.z + t[0], r[3] * p.x + r[4] * p.y + r[5] * p.z + t[1],
+            r[6] * p.x + r[7] * p.y + r[8] * p.z + t[2]};
+}
+
+/// Moves boundary particle i if it is a moving one (id in [first_moving, first_moving+nmoving)):
+/// position from its initial position, velocity = displacement over the coming interval.
+SEASPRING_HD inline void motionAt(std::uint32_t i, const ParticleView& v, std::uint32_t first_moving,
+                                  std::uint32_t nmoving, const Double3* pos0, const std::uint16_t* object,
+                                  const RigidMotionGpu* motions) {
+    const std::uint32_t k = v.id[i] - first_moving;
+    if (v.id[i] < first_moving || k >= nmoving) return;
+    const RigidMotionGpu& m = motions[object[k]];
+    const Double3 p = applyRigid(m.r, m.t, pos0[k]);
+    const Double3 q = applyRigid(m.r_next, m.t_next, pos0[k]);
+    v.pos[i] = p;
+    v.velrho[i].x = float((q.x - p.x) * m.inv_dt);
+    v.velrho[i].y = float((q.y - p.y) * m.inv_dt);
+    v.velrho[i].z = float((q.z - p.z) * m.inv_dt);
+}
+
+/// Time-step maxima contributed by particle i (fluid: |a|^2, |v|^2 and visc; boundary: visc).
+SEASPRING_HD inline DtMaxima dtMaximaAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v) {
+    DtMaxima m;
+    m.visc = v.visc[i];
+    if (i >= nbound) {
+        const Float4 a = v.acear[i];
+        const Float4 u = v.velrho[i];
+        m.ace2 = a.x * a.x + a.y * a.y + a.z * a.z;
+        m.vel2 = u.x * u.x + u.y * u.y + u.z * u.z;
+    }
+    return m;
+}
+
+/// SPS stress of fluid particle i from its velocity gradient.
+SEASPRING_HD inline void spsTauAt(std::uint32_t i, const ParticleView& v, float smag, float blin) {
+    v.tau[i] = spsTau(v.gradvel[i], v.velrho[i].w, smag, blin);
+}
+
+/// Symplectic predictor of particle i; saves the start-of-step state in pos_pre/velrho_pre.
+SEASPRING_HD inline void symplecticPredictorAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
+                                               double dt, const StepConstants& s) {
+    const Float4 vr0 = v.velrho[i];
+    const Double3 p0 = v.pos[i];
+    v.velrho_pre[i] = vr0;
+    v.pos_pre[i] = p0;
+    const Float4 a = v.acear[i];
+    if (i < nbound) {
+        v.velrho[i].w = symplecticPredictBoundRho(vr0.w, a.w, dt, s.rhop0);
+        return;
+    }
+    Double3 p;
+    Float4 vr;
+    symplecticPredictFluid(p0, vr0, a, dt, s, p, vr);
+    v.pos[i] = p;
+    v.velrho[i] = vr;
+    v.excl[i] = exclusionOf(p, vr, s);
+}
+
+/// Symplectic corrector of particle i (uses pos_pre/velrho_pre).
+SEASPRING_HD inline void symplecticCorrectorAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
+                                               double dt, const StepConstants& s) {
+    const Float4 vr0 = v.velrho_pre[i];
+    const float rho_half = v.velrho[i].w;
+    const Float4 a = v.acear[i];
+    if (i < nbound) {
+        v.velrho[i].w = symplecticCorrectBoundRho(vr0.w, rho_half, a.w, dt, s.rhop0);
+        return;
+    }
+    Double3 p;
+    Float4 vr;
+    symplecticCorrectFluid(v.pos_pre[i], vr0, rho_half, a, dt, s, p, vr);
+    v.pos[i] = p;
+    v.velrho[i] = vr;
+    v.excl[i] = exclusionOf(p, vr, s);
+}
+
+/// Verlet step of particle i; velrho_pre holds the state at n-1 and receives the state at n.
+SEASPRING_HD inline void verletAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v, double dt,
+                                  bool euler, const StepConstants& s) {
+    const Float4 vr = v.velrho[i];
+    const Float4 vrm1 = v.velrho_pre[i];
+    const Float4 a = v.acear[i];
+    v.velrho_pre[i] = vr;
+    if (i < nbound) {
+        v.velrho[i].w = verletBoundRho(vr.w, vrm1.w, a.w, dt, euler, s.rhop0);
+        return;
+    }
+    Double3 p;
+    Float4 out;
+    verletFluid(v.pos[i], vr, vrm1, a, dt, euler, s, p, out);
+    v.pos[i] = p;
+    v.velrho[i] = out;
+    v.excl[i] = exclusionOf(p, out, s);
+}
+
+}  // namespace seaspring::physics

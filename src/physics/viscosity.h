@@ -1,0 +1,103 @@
+// SeaSpring — MIT licence.
+/// \file viscosity.h
+/// \brief Viscous terms of the momentum equation (DualSPHysics `ViscoTreatment`) and the SPS
+///        (Smagorinsky, Dalrymple & Rogers 2006) sub-particle stress.
+///
+/// r_ab = r_a - r_b, v_ab = v_a - v_b, (frx, fry, frz) = grad_a W_ab, eta2 = 0.01 h^2.
+///   1 artificial (Monaghan 1992), only when v_ab . r_ab < 0:
+///       a_a -= m_b Pi_ab grad W,  Pi_ab = -alpha c0 mu_ab / rhobar, mu_ab = h v.r/(r^2+eta2),
+///       rhobar = (rho_a + rho_b)/2, alpha = Visco (x ViscoBoundFactor for boundary neighbours).
+///   3 laminar (Lo & Shao 2002):  a_a += m_b 4 nu (r . grad W) / ((rho_a+rho_b)(r^2+eta2)) v_ab
+///   2 laminar + SPS: the laminar term plus m_b (tau_a + tau_b) . grad W, with tau the SPS
+///       stress divided by density, computed per particle from the velocity gradient of the
+///       previous force evaluation (spsTau).
+#pragma once
+
+#include "core/host_device.h"
+#include "physics/sph_types.h"
+
+namespace seaspring::physics {
+
+enum class Viscosity { Artificial = 1, LaminarSps = 2, Laminar = 3 };
+
+/// v_ab . r_ab / (r^2 + eta2): the viscous time-step measure of a pair (its maximum over all
+/// pairs enters the CFL condition).
+SEASPRING_HD inline float viscDtPair(float dot_vr, float rr2, float eta2) {
+    return dot_vr / (rr2 + eta2);
+}
+
+/// Artificial viscosity: the factor s such that a_a -= s * grad W (zero when the pair
+/// separates). `alpha` already includes ViscoBoundFactor for boundary neighbours.
+SEASPRING_HD inline float artificialViscosityFactor(float dot_vr, float rr2, float rho_a,
+                                                    float rho_b, float mass_b, float alpha,
+                                                    float cs0, float h, float eta2) {
+    if (dot_vr >= 0.f) return 0.f;
+    const float amubar = h * (dot_vr / (rr2 + eta2));
+    const float robar = (rho_a + rho_b) * 0.5f;
+    return ((-alpha * cs0 * amubar) / robar) * mass_b;
+}
+
+/// Laminar viscosity: the factor s such that a_a += s * v_ab.
+SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float rr2, float rho_a,
+                                                 float rho_b, float mass_b, float nu,
+                                                 float eta2) {
+    const float temp = 4.f * nu / ((rr2 + eta2) * (rho_a + rho_b));
+    return mass_b * temp * dot_rgradw;
+}
+
+/// Accumulates the velocity-gradient sums that SPS needs (DualSPHysics' layout: xy holds
+/// du/dy + dv/dx, and so on): grad += -(m_b/rho_b) v_ab (x) grad W, symmetrised.
+SEASPRING_HD inline void accumulateVelocityGradient(SymTensor& g, float dvx, float dvy,
+                                                    float dvz, float frx, float fry, float frz,
+                                                    float mass_b, float rho_b) {
+    const float volp2 = -mass_b / rho_b;
+    float dv = dvx * volp2;
+    g.xx += dv * frx;
+    g.xy += dv * fry;
+    g.xz += dv * frz;
+    dv = dvy * volp2;
+    g.xy += dv * frx;
+    g.yy += dv * fry;
+    g.yz += dv * frz;
+    dv = dvz * volp2;
+    g.xz += dv * frx;
+    g.yz += dv * fry;
+    g.zz += dv * frz;
+}
+
+/// SPS stress over density from the velocity gradient sums (DualSPHysics' ComputeSpsTau):
+/// smag = (Cs Delta)^2 ... folded as (2/3)... see makeSpsConstants; blin = (2/3) CI Delta^2.
+SEASPRING_HD inline SymTensor spsTau(const SymTensor& g, float rho, float smag, float blin) {
+    const float pow1 = g.xx * g.xx + g.yy * g.yy + g.zz * g.zz;
+    const float prr = pow1 + pow1 + g.xy * g.xy + g.xz * g.xz + g.yz * g.yz;
+    const float visc_sps = smag * sqrtf(prr);
+    const float div_u = g.xx + g.yy + g.zz;
+    const float sps_k = (2.f / 3.f) * visc_sps * div_u;
+    const float sps_blin = blin * prr;
+    const float sumsps = -(sps_k + sps_blin);
+    const float twovisc_sps = visc_sps + visc_sps;
+    const float one_rho = 1.f / rho;
+    SymTensor t;
+    t.xx = one_rho * (twovisc_sps * g.xx + sumsps);
+    t.xy = one_rho * (visc_sps * g.xy);
+    t.xz = one_rho * (visc_sps * g.xz);
+    t.yy = one_rho * (twovisc_sps * g.yy + sumsps);
+    t.yz = one_rho * (visc_sps * g.yz);
+    t.zz = one_rho * (twovisc_sps * g.zz + sumsps);
+    return t;
+}
+
+/// SPS constants as DualSPHysics: Delta = dp/sqrt(3) (3D) or dp/sqrt(2) (2D),
+/// smag = (0.12 Delta)^2, blin = (2/3) 0.0066 Delta^2 (host only).
+struct SpsConstants {
+    float smag = 0, blin = 0;
+};
+inline SpsConstants makeSpsConstants(double dp, int dimensions) {
+    const double delta = dimensions == 2 ? dp / 1.4142135623730951 : dp / 1.7320508075688772;
+    SpsConstants c;
+    c.smag = float((0.12 * delta) * (0.12 * delta));
+    c.blin = float((2.0 / 3.0) * 0.0066 * delta * delta);
+    return c;
+}
+
+}  // namespace seaspring::physics

@@ -1,0 +1,79 @@
+// SeaSpring — MIT licence.
+/// \file backend.h
+/// \brief What a compute backend (OpenMP CPU, CUDA GPU) does for the time loop, and the data it
+///        is set up with. Backends hold the particle arrays in cell-sorted order; the time loop
+///        (simulation.h) only sees this interface.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "physics/cell_grid.h"
+#include "physics/fluid_constants.h"
+#include "physics/particle_updates.h"
+#include "physics/time_integration.h"
+
+namespace seaspring::solver {
+
+/// The compile-time option set, chosen at run time (see dispatch in fluid_dispatch.h).
+struct PhysicsChoice {
+    physics::KernelType kernel = physics::KernelType::Wendland;
+    physics::Viscosity visco = physics::Viscosity::Artificial;
+    physics::DensityDiffusion ddt = physics::DensityDiffusion::None;
+    int dim = 3;
+};
+
+/// Initial data, particles in id order: [0, nbound) boundary (fixed then moving), then fluid.
+struct BackendSetup {
+    PhysicsChoice physics;
+    physics::FluidConstants fluid;
+    physics::CellGrid grid;
+    physics::StepConstants step;
+    physics::SpsConstants sps;
+    bool symplectic = true;
+    std::uint32_t nbound = 0, nfluid = 0;
+    std::uint32_t first_moving = 0, nmoving = 0;  ///< moving boundary ids
+    std::vector<physics::Double3> pos;            ///< np
+    std::vector<physics::Float4> velrho;          ///< np
+    std::vector<physics::Double3> moving_pos0;    ///< nmoving: initial positions
+    std::vector<std::uint16_t> moving_object;     ///< nmoving: index into the motions array
+    std::uint32_t motion_objects = 0;
+};
+
+/// State copied back to the host, in id order.
+struct HostState {
+    std::vector<physics::Double3> pos;
+    std::vector<physics::Float4> velrho;
+    std::vector<std::uint8_t> excl;
+};
+
+class Backend {
+public:
+    virtual ~Backend() = default;
+    virtual std::string name() const = 0;        ///< "cpu" or "gpu"
+    virtual std::string deviceName() const = 0;  ///< processor or GPU name
+    virtual int threads() const = 0;             ///< OpenMP threads (1 for the GPU)
+
+    virtual void init(const BackendSetup& setup) = 0;
+    /// Sorts the active particles by cell (moving boundaries too when there are any), drops
+    /// the ones flagged excluded to the tail, rebuilds cell ranges and PosCell.
+    virtual void divide() = 0;
+    /// Places moving boundaries (pose now, velocity over the coming interval).
+    virtual void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) = 0;
+    /// One force evaluation; returns the dt maxima.
+    virtual physics::DtMaxima computeForces() = 0;
+    virtual void symplecticPredictor(double dt) = 0;
+    virtual void symplecticCorrector(double dt) = 0;
+    virtual void verletStep(double dt, bool euler) = 0;
+    /// Active fluid particles now.
+    virtual std::uint32_t activeFluid() const = 0;
+    virtual void download(HostState& out) = 0;
+};
+
+std::unique_ptr<Backend> makeCpuBackend(int threads);
+/// nullptr with `why` filled when the CUDA backend is not built or no device exists.
+std::unique_ptr<Backend> makeCudaBackend(int device, std::string& why);
+
+}  // namespace seaspring::solver
