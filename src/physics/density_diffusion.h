@@ -8,7 +8,10 @@
 ///   1 Molteni & Colagrossi (2009): D_a += ddtkh c0 (rho_a/rho_b - 1)/(r^2+eta2) dot3 m_b
 ///   2/3 Fourtakas et al. (2019):   D_a -= ddtkh c0 ((rho_b - rho_a) - rhoH_ab)/(r^2+eta2)
 ///                                        dot3 m_b/rho_b,
-///     rhoH_ab = rho0 ((1 + rho0 g_z (z_a - z_b)/B)^(1/7) - 1) (hydrostatic density difference).
+///     rhoH_ab = rho0 ((1 + rho0 |g| (z_a - z_b)/B)^(1/7) - 1), the hydrostatic density difference
+///     rho_b^H - rho_a^H, so the term vanishes in a fluid at hydrostatic rest (tested).
+///     ddtgz = -rho0 g_z / B. (DualSPHysics 5.4 writes DDTgz = rho0 g_z / B with drz = z_a - z_b,
+///     which has the opposite sign for gravity along -z; we follow the paper's definition.)
 /// Boundary neighbours: DensityDT 1 and 2 switch the term off for particle a entirely (any
 /// boundary neighbour); 3 ("full") skips only those pairs. Formulas as DualSPHysics 5.4.
 #pragma once
@@ -31,7 +34,7 @@ SEASPRING_HD inline float seventhRootNearOne(float x) {
 }
 
 /// Hydrostatic density difference rhoH_ab = rho0 ((1 + ddtgz drz)^(1/7) - 1), with
-/// ddtgz = rho0 g_z / B and drz = z_a - z_b.
+/// ddtgz = -rho0 g_z / B and drz = z_a - z_b.
 SEASPRING_HD inline float hydrostaticDensityDifference(float drz, float ddtgz, float rho0) {
     const float rh = 1.f + ddtgz * drz;
     return rho0 * seventhRootNearOne(rh) - rho0;

@@ -48,7 +48,8 @@ SEASPRING_HD inline std::uint32_t floatBitsToUint(float f) {
 #endif
 }
 
-SEASPRING_HD inline float maxf(float a, float b) { return a > b ? a : b; }
+/// max(a, b) that ignores a NaN in b (a is never NaN where used: it starts at 0).
+SEASPRING_HD inline float maxf(float a, float b) { return b > a ? b : a; }
 SEASPRING_HD inline int maxi(int a, int b) { return a > b ? a : b; }
 SEASPRING_HD inline int mini(int a, int b) { return a < b ? a : b; }
 

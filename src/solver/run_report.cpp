@@ -1,0 +1,66 @@
+// SeaSpring — MIT licence.
+/// \file run_report.cpp
+#include "solver/run_report.h"
+
+#include <cstdio>
+#include <ostream>
+
+#include "core/version.h"
+#include "io/json_writer.h"
+
+namespace seaspring::solver {
+
+void writeRunJson(const std::string& path, const RunSummary& s) {
+    io::JsonWriter j;
+    j.beginObject();
+    j.value("program", "seaspring");
+    j.value("version", kVersion);
+    j.value("case", s.case_name);
+    j.value("backend", s.backend);
+    j.value("device", s.device);
+    j.value("threads", s.threads);
+    j.value("physics", s.options);
+    j.beginObject("particles");
+    j.value("total", static_cast<long long>(s.np));
+    j.value("fixed", static_cast<long long>(s.nfixed));
+    j.value("moving", static_cast<long long>(s.nmoving));
+    j.value("solid", static_cast<long long>(s.nsolid));
+    j.value("fluid", static_cast<long long>(s.nfluid));
+    j.value("fluid_active_at_end", static_cast<long long>(s.fluid_active));
+    j.endObject();
+    j.beginObject("excluded");
+    j.value("out_of_domain", static_cast<long long>(s.excluded_position));
+    j.value("density_out_of_range", static_cast<long long>(s.excluded_density));
+    j.value("not_finite", static_cast<long long>(s.excluded_not_finite));
+    j.endObject();
+    j.value("steps", s.steps);
+    j.value("physical_time_s", s.physical_time);
+    j.value("last_dt_s", s.dt_last);
+    j.value("dtmin_hits", s.dtmin_hits);
+    j.value("wall_time_s", s.wall_time);
+    j.value("loop_time_s", s.loop_time);
+    j.value("ns_per_particle_step", s.ns_per_particle_step);
+    j.value("outputs", s.outputs);
+    j.value("stop_reason", s.stop_reason);
+    j.value("state_hash", s.state_hash);
+    j.endObject();
+    io::writeTextFileAtomic(path, j.str() + "\n");
+}
+
+void printSummary(std::ostream& os, const RunSummary& s) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "Finished (%s): %lld steps to t=%.6g s in %.3f s wall (loop %.3f s), %.2f ns/particle/step\n",
+                  s.stop_reason.c_str(), s.steps, s.physical_time, s.wall_time, s.loop_time,
+                  s.ns_per_particle_step);
+    os << line;
+    std::snprintf(line, sizeof line,
+                  "Particles: %u (fluid %u, active at end %u); excluded: %u out of domain, %u density, %u "
+                  "not finite; dt adjusted to DtMin %lld times\n",
+                  s.np, s.nfluid, s.fluid_active, s.excluded_position, s.excluded_density,
+                  s.excluded_not_finite, s.dtmin_hits);
+    os << line;
+    os << "State hash: " << s.state_hash << "\n";
+}
+
+}  // namespace seaspring::solver

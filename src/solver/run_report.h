@@ -1,0 +1,18 @@
+// SeaSpring — MIT licence.
+/// \file run_report.h
+/// \brief OUTDIR/run.json (the machine-readable run summary) and the closing summary lines.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "solver/simulation.h"
+
+namespace seaspring::solver {
+
+/// Writes the summary as JSON to `path` (atomically).
+void writeRunJson(const std::string& path, const RunSummary& s);
+/// Human-readable end-of-run lines.
+void printSummary(std::ostream& os, const RunSummary& s);
+
+}  // namespace seaspring::solver

@@ -1,0 +1,41 @@
+// SeaSpring — MIT licence.
+/// \file state_hash.cpp
+#include "solver/state_hash.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace seaspring::solver {
+
+namespace {
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
+constexpr std::uint64_t kFnvPrime = 1099511628211ull;
+
+void mix(std::uint64_t& h, const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) {
+        h ^= p[i];
+        h *= kFnvPrime;
+    }
+}
+}  // namespace
+
+std::uint64_t stateHash(const HostState& s) {
+    std::uint64_t h = kFnvOffset;
+    for (std::size_t i = 0; i < s.pos.size(); ++i) {
+        const double p[3] = {s.pos[i].x, s.pos[i].y, s.pos[i].z};
+        const float v[4] = {s.velrho[i].x, s.velrho[i].y, s.velrho[i].z, s.velrho[i].w};
+        mix(h, p, sizeof p);
+        mix(h, v, sizeof v);
+        mix(h, &s.excl[i], 1);
+    }
+    return h;
+}
+
+std::string hashHex(std::uint64_t h) {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+}  // namespace seaspring::solver

@@ -1,0 +1,142 @@
+// SeaSpring — MIT licence.
+/// \file test_physics_kernels.cpp
+/// \brief Kernel normalisation and gradients (2D, 3D, Wendland, cubic), the Tait EOS, the
+///        seventh root and the DDT hydrostatic term against hand values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/density_diffusion.h"
+#include "physics/eos_tait.h"
+#include "physics/sph_kernels.h"
+#include "physics/viscosity.h"
+
+using namespace seaspring::physics;
+
+namespace {
+
+/// Integral of W over the plane (2D) or space (3D) by a midpoint rule on a fine lattice.
+template <class K>
+double integral(const KernelConstants& k, double h, int dim) {
+    const int n = dim == 2 ? 800 : 160;
+    const double d = 4.0 * h / n;
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int l = 0; l < (dim == 3 ? n : 1); ++l) {
+                const double x = -2 * h + (i + 0.5) * d, y = -2 * h + (j + 0.5) * d;
+                const double z = dim == 3 ? -2 * h + (l + 0.5) * d : 0.0;
+                const double r2 = x * x + y * y + z * z;
+                if (r2 <= 4 * h * h) sum += K::value(float(r2), k);
+            }
+    return sum * (dim == 2 ? d * d : d * d * d);
+}
+
+template <class K>
+void checkGradient(const KernelConstants& k, double h) {
+    // F(r) r must equal dW/dr (central difference of W in double-step float).
+    for (double q : {0.3, 0.7, 0.99, 1.01, 1.5, 1.9}) {
+        const double r = q * h, e = 1e-3 * h;
+        const double dwdr = (K::value(float((r + e) * (r + e)), k) - K::value(float((r - e) * (r - e)), k)) / (2 * e);
+        const double f = K::gradFactor(float(r * r), k) * r;
+        EXPECT_NEAR(f, dwdr, 2e-3 * std::fabs(dwdr) + 1e-6 * std::fabs(K::value(0.f, k)) / h) << "q=" << q;
+    }
+}
+
+}  // namespace
+
+TEST(Kernels, WendlandIntegratesToOne) {
+    const double h = 0.02;
+    EXPECT_NEAR(integral<WendlandKernel>(makeKernelConstants(h, h / 1.5, 2), h, 2), 1.0, 1e-4);
+    EXPECT_NEAR(integral<WendlandKernel>(makeKernelConstants(h, h / 1.5, 3), h, 3), 1.0, 2e-3);
+}
+
+TEST(Kernels, CubicIntegratesToOne) {
+    const double h = 0.02;
+    EXPECT_NEAR(integral<CubicKernel>(makeKernelConstants(h, h / 1.5, 2), h, 2), 1.0, 1e-4);
+    EXPECT_NEAR(integral<CubicKernel>(makeKernelConstants(h, h / 1.5, 3), h, 3), 1.0, 2e-3);
+}
+
+TEST(Kernels, GradientFactorIsDerivativeOverR) {
+    const double h = 0.05;
+    for (int dim : {2, 3}) {
+        checkGradient<WendlandKernel>(makeKernelConstants(h, h / 1.5, dim), h);
+        checkGradient<CubicKernel>(makeKernelConstants(h, h / 1.5, dim), h);
+    }
+}
+
+TEST(Kernels, WendlandHandValues) {
+    // 3D, h = 1: aD = 21/(16 pi); W(0) = aD; W(1) = aD * (1/2)^4 * 3; F(1) = -5 aD (1/2)^3.
+    const KernelConstants k = makeKernelConstants(1.0, 1.0, 3);
+    const double ad = 21.0 / (16.0 * 3.14159265358979323846);
+    EXPECT_NEAR(WendlandKernel::value(0.f, k), ad, 1e-6);
+    EXPECT_NEAR(WendlandKernel::value(1.f, k), ad * 3.0 / 16.0, 1e-6);
+    EXPECT_NEAR(WendlandKernel::gradFactor(1.f, k), -5.0 * ad / 8.0, 1e-6);
+    EXPECT_EQ(WendlandKernel::value(4.f, k), 0.f);
+    EXPECT_EQ(WendlandKernel::gradFactor(4.f, k), 0.f);
+}
+
+TEST(Kernels, CubicTensileCorrectionHandValue) {
+    // At r = dp, W/W(dp) = 1: correction = 0.01 p/rho^2 per positive-pressure particle.
+    const double h = 1.0, dp = 1.0 / 1.2;
+    const KernelConstants k = makeKernelConstants(h, dp, 3);
+    const float r2 = float(dp * dp);
+    const float t = CubicKernel::tensileCorrection(r2, 2000.f, 1000.f, -1000.f, 1000.f, k);
+    EXPECT_NEAR(t, 0.01 * 2000.0 / 1e6 + (-0.2) * (-1000.0) / 1e6, 1e-8);
+}
+
+TEST(Eos, TaitHandValues) {
+    // B = 1e5 Pa, rho0 = 1000: p(1010) = 1e5 (1.01^7 - 1).
+    // Float evaluation: relative error a few 1e-6 of the pressure (1e-3f is not exact).
+    EXPECT_NEAR(taitPressure7(1010.f, 1e5f, 1e-3f), 1e5 * (std::pow(1.01, 7) - 1), 0.1);
+    EXPECT_EQ(taitPressure7(1000.f, 1e5f, 1e-3f), 0.f);
+    EXPECT_NEAR(taitPressure7(990.f, 1e5f, 1e-3f), 1e5 * (std::pow(0.99, 7) - 1), 0.1);
+    EXPECT_NEAR(taitB(30.0, 1000.0, 7.0), 900.0 * 1000.0 / 7.0, 1e-9);
+}
+
+TEST(Ddt, SeventhRootNearOne) {
+    for (double x = 0.98; x <= 1.02; x += 0.0005) {
+        const double ref = std::pow(x, 1.0 / 7.0);
+        EXPECT_NEAR(seventhRootNearOne(float(x)), ref, 2.5e-7) << x;
+    }
+}
+
+TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
+    // Two particles dz apart in a still column: rhoH_ab = rho_b - rho_a exactly in the Tait
+    // hydrostatic profile, so the Fourtakas pair term vanishes.
+    const double rho0 = 1000, g = 9.81, c0 = 30, b = c0 * c0 * rho0 / 7.0, dz = 0.02;
+    const double za = 0.1, zb = za + dz, depth = 0.5;
+    const double rho_a = hydrostaticDensity(rho0, b, 7, g, depth - za);
+    const double rho_b = hydrostaticDensity(rho0, b, 7, g, depth - zb);
+    const float ddtgz = float(rho0 * g / b);  // -rho0 g_z / B with g_z = -g
+    const float dh = hydrostaticDensityDifference(float(za - zb), ddtgz, float(rho0));
+    // Exact: rho0 ((1 + rho0 g dz / B)^(1/7) - 1) with sign from gz.
+    const double exact = rho0 * (std::pow(1.0 + rho0 * g * (za - zb) / b, 1.0 / 7.0) - 1.0);
+    EXPECT_NEAR(dh, exact, 2e-4);
+    // Fourtakas' rhoH is referred to rho0, not rho_a: the relative error is about
+    // rho0 g depth / B (3% at 0.4 m depth here).
+    EXPECT_NEAR(dh, rho_b - rho_a, 0.04 * std::fabs(rho_b - rho_a));
+    const float term = ddtFourtakasPair(float(rho_a), float(rho_b), float(za - zb), float(dz * dz),
+                                        -1000.f * float(dz * dz), 0.008f, 0.0069f, float(c0), 1e-6f,
+                                        ddtgz, float(rho0));
+    const float molteni_scale = std::fabs(ddtMolteniPair(float(rho_a), float(rho_b), float(dz * dz),
+                                                         -1000.f * float(dz * dz), 0.008f, 0.0069f,
+                                                         float(c0), 1e-6f));
+    EXPECT_LT(std::fabs(term), 0.05f * molteni_scale);
+}
+
+TEST(Viscosity, ArtificialOnlyWhenApproaching) {
+    EXPECT_EQ(artificialViscosityFactor(0.1f, 1e-4f, 1000, 1000, 0.001f, 0.1f, 30, 0.02f, 4e-6f), 0.f);
+    const float s = artificialViscosityFactor(-0.1f, 1e-4f, 1000, 1000, 0.001f, 0.1f, 30, 0.02f, 4e-6f);
+    // Pi = -alpha c0 h (v.r/(r^2+eta2)) / rhobar, times m_b.
+    const double ref = (-0.1 * 30 * (0.02 * (-0.1 / (1e-4 + 4e-6))) / 1000.0) * 0.001;
+    EXPECT_NEAR(s, ref, 1e-6 * std::fabs(ref));
+}
+
+TEST(Viscosity, SpsTauOfPureShear) {
+    // du/dy = g: xy = g; |S| term prr = g^2; tau_xy = smag g * g / rho.
+    SymTensor gv{0, 2.f, 0, 0, 0, 0};
+    const SymTensor t = spsTau(gv, 1000.f, 1e-6f, 1e-7f);
+    EXPECT_NEAR(t.xy, 1e-6 * 2.0 * 2.0 / 1000.0, 1e-12);
+    EXPECT_NEAR(t.xx, -(1e-7 * 4.0) / 1000.0, 1e-13);
+}
