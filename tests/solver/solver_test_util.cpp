@@ -1,0 +1,64 @@
+// SeaSpring — MIT licence.
+/// \file solver_test_util.cpp
+#include "solver_test_util.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "solver/backend.h"
+#include "solver/solver_case.h"
+
+namespace seaspring::test {
+
+namespace fs = std::filesystem;
+
+std::string generateCaseFile(const std::string& dir, const std::string& name, const std::string& def_path,
+                             double dp) {
+    fs::create_directories(dir);
+    std::ostringstream cmd;
+    cmd << "'" << SEASPRING_GENCASE_BIN << "' '" << def_path << "' '" << dir << "/" << name << "'";
+    if (dp > 0) cmd << " -dp:" << dp;
+    cmd << " > '" << dir << "/" << name << ".gencase.log' 2>&1";
+    if (std::system(cmd.str().c_str()) != 0) {
+        std::ifstream log(dir + "/" + name + ".gencase.log");
+        std::stringstream s;
+        s << log.rdbuf();
+        throw Error("gencase failed for " + def_path + ":\n" + s.str());
+    }
+    return dir + "/" + name;
+}
+
+std::string generateCase(const std::string& dir, const std::string& name, const std::string& def_xml,
+                         double dp) {
+    fs::create_directories(dir);
+    const std::string def = dir + "/" + name + "_Def.xml";
+    std::ofstream(def) << def_xml;
+    return generateCaseFile(dir, name, def, dp);
+}
+
+SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,
+                 const std::function<void(solver::RunOptions&)>& tweak) {
+    SolverRun r;
+    r.kase = solver::loadSolverCase(case_path);
+    solver::RunOptions o;
+    o.backend = solver::RunOptions::Backend::Cpu;
+    o.threads = threads;
+    o.case_path = case_path;
+    o.outdir = outdir;
+    o.quiet = true;
+    o.save_h5 = false;
+    if (tweak) tweak(o);
+    solver::applyOverrides(o, r.kase.params);
+    if (o.tmax) r.kase.params.time_max = *o.tmax;
+    if (o.tout) r.kase.params.time_out = *o.tout;
+    std::ostringstream log;
+    solver::Simulation sim(r.kase, o, solver::makeCpuBackend(threads), log);
+    r.summary = sim.run();
+    r.state = sim.finalState();
+    return r;
+}
+
+}  // namespace seaspring::test

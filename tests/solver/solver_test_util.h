@@ -1,0 +1,33 @@
+// SeaSpring — MIT licence.
+/// \file solver_test_util.h
+/// \brief Helpers for solver tests: generate a case with the gencase binary, run it in-process
+///        on the CPU backend with a given thread count, and read back the final state.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "solver/run_options.h"
+#include "solver/simulation.h"
+
+namespace seaspring::test {
+
+/// Writes `def_xml` to dir/NAME_Def.xml, runs gencase (optionally with -dp) and returns
+/// dir/NAME (the path seaspring takes). Fails the test (throws) when gencase fails.
+std::string generateCase(const std::string& dir, const std::string& name, const std::string& def_xml,
+                         double dp = 0);
+/// Same for an existing definition file.
+std::string generateCaseFile(const std::string& dir, const std::string& name, const std::string& def_path,
+                             double dp = 0);
+
+struct SolverRun {
+    solver::RunSummary summary;
+    solver::HostState state;
+    solver::SolverCase kase;
+};
+
+/// Runs the case on the CPU backend; `tweak` edits options (tmax, nsteps, overrides...).
+SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,
+                 const std::function<void(solver::RunOptions&)>& tweak = {});
+
+}  // namespace seaspring::test

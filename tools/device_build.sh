@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds SeaSpring with the CUDA backend (sm_90) into build-dev/ for the lent GPU machines and
+# copies the shared libraries the binaries need (HDF5, pugixml, their dependencies; glibc
+# excluded) into build-dev/lib, so that build-dev can be carried to the device machine and run
+# there with LD_LIBRARY_PATH=build-dev/lib (tools/device_check.sh does this).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build-dev"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSEASPRING_CUDA=ON \
+  -DCMAKE_CUDA_ARCHITECTURES=90 -DSEASPRING_TESTS=OFF >/dev/null
+cmake --build "$build" -j "${SEASPRING_JOBS:-$(nproc)}" --target seaspring gencase
+mkdir -p "$build/lib"
+ldd "$build/bin/seaspring" "$build/bin/gencase" | awk '/=> \//{print $3}' | sort -u |
+  grep -v -E '/(libc|libm|libresolv|libpthread|libdl|librt)\.so' |
+  while read -r lib; do cp -L -u "$lib" "$build/lib/"; done
+du -sh "$build/bin" "$build/lib"
+# The shared DualSPHysics inputs live outside the repository and do not travel: copy them.
+mkdir -p "$build/shared-cases"
+cp "$root/../shared/dualsphysics-cases/Spheric2Dam_01M.xml" \
+   "$root/../shared/dualsphysics-cases/CaseDambreakVal2D_Def.xml" "$build/shared-cases/"
