@@ -248,7 +248,7 @@ void Simulation::output(double time, long long step) {
         char name[64];
         std::snprintf(name, sizeof name, "part_%04d.vtu", out_index_);
         fs::create_directories(fs::path(opt_.outdir) / "vtk");
-        writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p,
+        io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p,
                           {{"press", press}, {"excluded", st.excl}});
     }
     ++out_index_;
@@ -336,10 +336,9 @@ RunSummary Simulation::run() {
     }
     const auto t_end_loop = Clock::now();
     if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
-    HostState st;
-    backend_->download(st);
-    sum_.state_hash = hashHex(stateHash(st));
-    for (std::uint8_t e : st.excl) {
+    backend_->download(final_);
+    sum_.state_hash = hashHex(stateHash(final_));
+    for (std::uint8_t e : final_.excl) {
         if (e == physics::kExcludedPosition) ++sum_.excluded_position;
         if (e == physics::kExcludedDensity) ++sum_.excluded_density;
         if (e == physics::kExcludedNotFinite) ++sum_.excluded_not_finite;

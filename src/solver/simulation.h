@@ -42,6 +42,8 @@ public:
                std::ostream& log);
     /// Runs to TimeMax (or -nsteps), writing outputs; returns the summary (also run.json).
     RunSummary run();
+    /// The state at the end of run() (id order).
+    const HostState& finalState() const { return final_; }
 
 private:
     void output(double time, long long step);
@@ -54,6 +56,7 @@ private:
     std::ostream& log_;
     BackendSetup setup_;
     RunSummary sum_;
+    HostState final_;
     int out_index_ = 0;
     struct Output;
     std::shared_ptr<Output> out_;
