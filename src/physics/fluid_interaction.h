@@ -44,7 +44,7 @@ struct FluidAccum {
 template <class Opt, bool kBound>
 SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, const Float4& psa,
                                          int cax, float rowdy, float rowdz, const Float4& va,
-                                         float pressa, const SymTensor& taua,
+                                         float ovrhoa, float pressa, const SymTensor& taua,
                                          const InteractionInputs& in, const FluidConstants& c,
                                          const CellGrid& g, FluidAccum& acc) {
     using K = typename Opt::Kernel;
@@ -60,10 +60,12 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
         const float fac = K::gradFactor(rr2, c.ker);
         const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
         const Float4 vb = in.velrho[j];
+        const float ovrhob = 1.f / vb.w;
+        const float ov_r2eta = 1.f / (rr2 + c.eta2);
         const float pressb = taitPressure7(vb.w, c.cteb, c.ovrhop0);
 
         // Pressure.
-        float prs = (pressa + pressb) / (va.w * vb.w);
+        float prs = (pressa + pressb) * (ovrhoa * ovrhob);
         if (K::kType == KernelType::Cubic)
             prs += CubicKernel::tensileCorrection(rr2, pressa, va.w, pressb, vb.w, c.ker);
         const float p_vpm = -prs * massb;
@@ -73,20 +75,20 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
 
         // Continuity.
         const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-        acc.ar += massb * (dvx * frx + dvy * fry + dvz * frz) * (va.w / vb.w);
+        acc.ar += massb * (dvx * frx + dvy * fry + dvz * frz) * (va.w * ovrhob);
 
         // Viscous time-step measure and viscosity.
         const float dot_vr = drx * dvx + dry * dvy + drz * dvz;
-        acc.visc = maxf(acc.visc, viscDtPair(dot_vr, rr2, c.eta2));
+        acc.visc = maxf(acc.visc, viscDtPair(dot_vr, ov_r2eta));
         if (Opt::visco == Viscosity::Artificial) {
-            const float s = artificialViscosityFactor(dot_vr, rr2, va.w, vb.w, massb, visco,
-                                                      c.cs0, c.ker.h, c.eta2);
+            const float s = artificialViscosityFactor(dot_vr, ov_r2eta, va.w, vb.w, massb, visco,
+                                                      c.cs0, c.ker.h);
             acc.ax -= s * frx;
             acc.ay -= s * fry;
             acc.az -= s * frz;
         } else {
             const float dot_rw = drx * frx + dry * fry + drz * frz;
-            const float s = laminarViscosityFactor(dot_rw, rr2, va.w, vb.w, massb, visco, c.eta2);
+            const float s = laminarViscosityFactor(dot_rw, ov_r2eta, va.w, vb.w, massb, visco);
             acc.ax += s * dvx;
             acc.ay += s * dvy;
             acc.az += s * dvz;
@@ -101,7 +103,7 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
                 acc.ay += massb * (t.xy * frx + t.yy * fry + t.yz * frz);
                 acc.az += massb * (t.xz * frx + t.yz * fry + t.zz * frz);
                 if (!kBound)
-                    accumulateVelocityGradient(acc.gradvel, dvx, dvy, dvz, frx, fry, frz, massb, vb.w);
+                    accumulateVelocityGradient(acc.gradvel, dvx, dvy, dvz, frx, fry, frz, massb, ovrhob);
             }
         }
 
@@ -111,16 +113,16 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
                 acc.ddt_off = true;
             } else if (Opt::ddt == DensityDiffusion::Molteni) {
                 const float dot3 = drx * frx + dry * fry + drz * frz;
-                acc.delta += ddtMolteniPair(va.w, vb.w, rr2, dot3, massb, c.ddtkh, c.cs0, c.eta2);
+                acc.delta += ddtMolteniPair(va.w, ovrhob, ov_r2eta, dot3, massb, c.ddtkh, c.cs0);
             } else {
                 const float dot3 = drx * frx + dry * fry + drz * frz;
-                acc.delta += ddtFourtakasPair(va.w, vb.w, drz, rr2, dot3, massb, c.ddtkh, c.cs0,
-                                              c.eta2, c.ddtgz, c.rhop0);
+                acc.delta += ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh,
+                                              c.cs0, c.ddtgz, c.rhop0);
             }
         } else if (Opt::ddt == DensityDiffusion::FourtakasFull && !kBound) {
             const float dot3 = drx * frx + dry * fry + drz * frz;
-            acc.delta += ddtFourtakasPair(va.w, vb.w, drz, rr2, dot3, massb, c.ddtkh, c.cs0,
-                                          c.eta2, c.ddtgz, c.rhop0);
+            acc.delta += ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh,
+                                          c.cs0, c.ddtgz, c.rhop0);
         }
     }
 }
@@ -128,7 +130,8 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
 /// Visits the rows around `psa`'s cell in one block (cell_start of that block).
 template <class Opt, bool kBound>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
-                                           const Float4& va, float pressa, const SymTensor& taua,
+                                           const Float4& va, float ovrhoa, float pressa,
+                                           const SymTensor& taua,
                                            const InteractionInputs& in, const FluidConstants& c,
                                            const CellGrid& g, FluidAccum& acc) {
     const int cax = packedCellX(g, psa.w);
@@ -145,8 +148,8 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
             const std::uint32_t row = g.linear(0, y, z);
             const std::uint32_t pb = cell_start[row + std::uint32_t(x0)];
             const std::uint32_t pe = cell_start[row + std::uint32_t(x1) + 1u];
-            fluidPairsInRow<Opt, kBound>(pb, pe, psa, cax, rowdy, rowdz, va, pressa, taua, in, c,
-                                         g, acc);
+            fluidPairsInRow<Opt, kBound>(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua,
+                                         in, c, g, acc);
         }
     }
 }
@@ -158,11 +161,12 @@ SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const Intera
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
     const float pressa = taitPressure7(va.w, c.cteb, c.ovrhop0);
+    const float ovrhoa = 1.f / va.w;
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
     FluidAccum acc;
-    fluidPairsInBlock<Opt, false>(in.cell_start_fluid, psa, va, pressa, taua, in, c, g, acc);
-    fluidPairsInBlock<Opt, true>(in.cell_start_bound, psa, va, pressa, taua, in, c, g, acc);
+    fluidPairsInBlock<Opt, false>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
+    fluidPairsInBlock<Opt, true>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
     if (Opt::ddt != DensityDiffusion::None && !acc.ddt_off) acc.ar += acc.delta;
     return acc;
 }
@@ -205,7 +209,7 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                 const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
                 ar += c.massfluid * (dvx * frx + dvy * fry + dvz * frz) * (va.w / vb.w);
                 const float dot_vr = drx * dvx + dry * dvy + drz * dvz;
-                visc = maxf(visc, viscDtPair(dot_vr, rr2, c.eta2));
+                visc = maxf(visc, viscDtPair(dot_vr, 1.f / (rr2 + c.eta2)));
             }
         }
     }

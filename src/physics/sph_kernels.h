@@ -21,6 +21,7 @@ namespace seaspring::physics {
 /// Kernel constants (float, as used per pair).
 struct KernelConstants {
     float h = 0;            ///< smoothing length [m]
+    float ovh = 0;          ///< 1/h
     float kernelsize2 = 0;  ///< (2h)^2
     float awen = 0;         ///< Wendland normalisation aD
     float bwen = 0;         ///< Wendland gradient constant -5 aD / h^2
@@ -41,14 +42,14 @@ struct WendlandKernel {
     static constexpr KernelType kType = KernelType::Wendland;
     /// W(r) for r^2 = rr2 (caller guarantees rr2 <= (2h)^2).
     SEASPRING_HD static float value(float rr2, const KernelConstants& k) {
-        const float qq = sqrtf(rr2) / k.h;
+        const float qq = sqrtf(rr2) * k.ovh;
         const float wqq1 = 1.f - 0.5f * qq;
         const float wqq2 = wqq1 * wqq1;
         return k.awen * (2.f * qq + 1.f) * (wqq2 * wqq2);
     }
     /// F(r) = (dW/dr)/r.
     SEASPRING_HD static float gradFactor(float rr2, const KernelConstants& k) {
-        const float qq = sqrtf(rr2) / k.h;
+        const float qq = sqrtf(rr2) * k.ovh;
         const float wqq1 = 1.f - 0.5f * qq;
         return k.bwen * (wqq1 * wqq1 * wqq1);
     }
@@ -57,7 +58,7 @@ struct WendlandKernel {
 struct CubicKernel {
     static constexpr KernelType kType = KernelType::Cubic;
     SEASPRING_HD static float value(float rr2, const KernelConstants& k) {
-        const float qq = sqrtf(rr2) / k.h;
+        const float qq = sqrtf(rr2) * k.ovh;
         if (qq > 1.f) {
             const float wqq1 = 2.f - qq;
             return k.cubic_a24 * (wqq1 * wqq1 * wqq1);
@@ -67,7 +68,7 @@ struct CubicKernel {
     }
     SEASPRING_HD static float gradFactor(float rr2, const KernelConstants& k) {
         const float rad = sqrtf(rr2);
-        const float qq = rad / k.h;
+        const float qq = rad * k.ovh;
         if (qq > 1.f) {
             const float wqq1 = 2.f - qq;
             return k.cubic_c2 * (wqq1 * wqq1) / rad;
@@ -94,6 +95,7 @@ inline KernelConstants makeKernelConstants(double h, double dp, int dimensions) 
     const double pi = 3.14159265358979323846;
     KernelConstants k;
     k.h = float(h);
+    k.ovh = float(1.0 / h);
     k.kernelsize2 = float((2.0 * h) * (2.0 * h));
     const double awen = dimensions == 2 ? 7.0 / (4.0 * pi * h * h)
                                         : 21.0 / (16.0 * pi * h * h * h);

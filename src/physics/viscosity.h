@@ -21,27 +21,24 @@ namespace seaspring::physics {
 enum class Viscosity { Artificial = 1, LaminarSps = 2, Laminar = 3 };
 
 /// v_ab . r_ab / (r^2 + eta2): the viscous time-step measure of a pair (its maximum over all
-/// pairs enters the CFL condition).
-SEASPRING_HD inline float viscDtPair(float dot_vr, float rr2, float eta2) {
-    return dot_vr / (rr2 + eta2);
-}
+/// pairs enters the CFL condition); ov_r2eta = 1/(r^2 + eta2).
+SEASPRING_HD inline float viscDtPair(float dot_vr, float ov_r2eta) { return dot_vr * ov_r2eta; }
 
 /// Artificial viscosity: the factor s such that a_a -= s * grad W (zero when the pair
 /// separates). `alpha` already includes ViscoBoundFactor for boundary neighbours.
-SEASPRING_HD inline float artificialViscosityFactor(float dot_vr, float rr2, float rho_a,
+SEASPRING_HD inline float artificialViscosityFactor(float dot_vr, float ov_r2eta, float rho_a,
                                                     float rho_b, float mass_b, float alpha,
-                                                    float cs0, float h, float eta2) {
+                                                    float cs0, float h) {
     if (dot_vr >= 0.f) return 0.f;
-    const float amubar = h * (dot_vr / (rr2 + eta2));
+    const float amubar = h * (dot_vr * ov_r2eta);
     const float robar = (rho_a + rho_b) * 0.5f;
     return ((-alpha * cs0 * amubar) / robar) * mass_b;
 }
 
 /// Laminar viscosity: the factor s such that a_a += s * v_ab.
-SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float rr2, float rho_a,
-                                                 float rho_b, float mass_b, float nu,
-                                                 float eta2) {
-    const float temp = 4.f * nu / ((rr2 + eta2) * (rho_a + rho_b));
+SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_r2eta, float rho_a,
+                                                 float rho_b, float mass_b, float nu) {
+    const float temp = (4.f * nu * ov_r2eta) / (rho_a + rho_b);
     return mass_b * temp * dot_rgradw;
 }
 
@@ -49,8 +46,8 @@ SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float rr2, fl
 /// du/dy + dv/dx, and so on): grad += -(m_b/rho_b) v_ab (x) grad W, symmetrised.
 SEASPRING_HD inline void accumulateVelocityGradient(SymTensor& g, float dvx, float dvy,
                                                     float dvz, float frx, float fry, float frz,
-                                                    float mass_b, float rho_b) {
-    const float volp2 = -mass_b / rho_b;
+                                                    float mass_b, float ovrho_b) {
+    const float volp2 = -mass_b * ovrho_b;
     float dv = dvx * volp2;
     g.xx += dv * frx;
     g.xy += dv * fry;
