@@ -1,13 +1,21 @@
 // SeaSpring — MIT licence.
 /// \file run_options.cpp
-/// \brief Parsing of the DualSPHysics-style command line. Options are `-name` or
-///        `-name:value`; `--help`, `-h`, `-help` print the help.
+/// \brief The solver's command line (see run_options.h). DualSPHysics' `-name:value` is
+///        translated to CLI11's `--name=value` (as in gencase_main.cpp); CLI11 knows the
+///        options and their conflicts, the values are converted here, strictly.
 #include "solver/run_options.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <climits>
+#include <cmath>
 #include <cstdlib>
-#include <string>
+#include <map>
+#include <set>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "core/error.h"
 
@@ -15,185 +23,303 @@ namespace seaspring::solver {
 
 namespace {
 
-[[noreturn]] void bad(const std::string& arg, const std::string& why) {
-    throw Error("bad option " + arg + ": " + why);
-}
+const char* kUsage = "seaspring [options] OUTDIR/NAME OUTDIR";
 
-double toNumber(const std::string& arg, const std::string& v) {
-    if (v.empty()) bad(arg, "a value is required (-name:value)");
+[[noreturn]] void usageError(const std::string& message) { throw Error(message); }
+
+/// One option as the user wrote it.
+struct Given {
+    std::string arg;    ///< as written, for messages
+    std::string value;  ///< after ':' or '='
+    bool has_value = false;
+};
+
+/// A decimal number written completely ("0.2x", "nan", "inf", hex and blanks are refused).
+double toDouble(const Given& g) {
+    const std::string& t = g.value;
+    if (t.empty() || t.find_first_not_of("0123456789+-.eE") != std::string::npos)
+        usageError(g.arg + ": \"" + t + "\" is not a number");
     char* end = nullptr;
     errno = 0;
-    const double d = std::strtod(v.c_str(), &end);
-    if (end != v.c_str() + v.size() || errno != 0 || !(d == d)) bad(arg, "\"" + v + "\" is not a number");
-    return d;
+    const double v = std::strtod(t.c_str(), &end);
+    if (end != t.c_str() + t.size()) usageError(g.arg + ": \"" + t + "\" is not a number");
+    if (errno == ERANGE || !std::isfinite(v)) usageError(g.arg + ": \"" + t + "\" is out of range");
+    return v;
 }
 
-long long toInteger(const std::string& arg, const std::string& v) {
-    if (v.empty()) bad(arg, "a value is required (-name:value)");
-    char* end = nullptr;
+/// A decimal integer in lo..hi (hi >= INT_MAX: no upper limit but the type's).
+long long toInteger(const Given& g, long long lo, long long hi, const std::string& meaning = "") {
+    const std::string& t = g.value;
+    const std::size_t sign = !t.empty() && (t[0] == '-' || t[0] == '+') ? 1 : 0;
+    if (t.size() == sign || t.find_first_not_of("0123456789", sign) != std::string::npos)
+        usageError(g.arg + ": \"" + t + "\" is not an integer");
     errno = 0;
-    const long long i = std::strtoll(v.c_str(), &end, 10);
-    if (end != v.c_str() + v.size() || errno != 0) bad(arg, "\"" + v + "\" is not an integer");
-    return i;
+    const long long v = std::strtoll(t.c_str(), nullptr, 10);
+    if (errno == ERANGE || v > hi) {
+        if (hi >= INT_MAX) usageError(g.arg + ": " + t + " is too large");
+        usageError(g.arg + ": " + t + " must be " + std::to_string(lo) + ".." + std::to_string(hi) +
+                   meaning);
+    }
+    if (v < lo)
+        usageError(g.arg + ": " + t + " must be " +
+                   (hi >= INT_MAX ? ">= " + std::to_string(lo)
+                                  : std::to_string(lo) + ".." + std::to_string(hi)) +
+                   meaning);
+    return v;
+}
+
+/// A number that must be > 0 (`Positive`), >= 0 (`NonNegative`) or in (0, 1] (`Fraction`).
+enum class Range { Positive, NonNegative, Fraction };
+
+double toDouble(const Given& g, Range r) {
+    const double v = toDouble(g);
+    const bool ok = r == Range::Positive      ? v > 0
+                    : r == Range::NonNegative ? v >= 0
+                                              : v > 0 && v <= 1;
+    if (!ok)
+        usageError(g.arg + ": " + g.value + " must be " +
+                   (r == Range::Positive      ? "> 0"
+                    : r == Range::NonNegative ? ">= 0"
+                                              : "in (0, 1]"));
+    return v;
+}
+
+/// The options CLI11 knows; their conflicts are declared here too.
+void declareOptions(CLI::App& app) {
+    auto value = [&](const char* name) { return app.add_option(name, "")->type_size(1); };
+    auto optional = [&](const char* name) { return value(name)->expected(0, 1); };
+    auto flag = [&](const char* name) { return app.add_flag(name); };
+    CLI::Option* gpu = optional("--gpu");
+    flag("--cpu")->excludes(gpu);
+    value("--threads");
+    value("--tmax");
+    value("--tout");
+    value("--sv");
+    optional("--svres");
+    value("--nsteps");
+    value("--cellmode");
+    value("--progress");
+    flag("--quiet");
+    CLI::Option* verlet = optional("--verlet");
+    flag("--symplectic")->excludes(verlet);
+    CLI::Option* wendland = flag("--wendland");
+    flag("--cubic")->excludes(wendland);
+    CLI::Option* art = value("--viscoart");
+    CLI::Option* lam = value("--viscolam")->excludes(art);
+    value("--viscolamsps")->excludes(art)->excludes(lam);
+    value("--viscoboundfactor");
+    value("--ddt");
+    value("--ddtvalue");
+    value("--cfl");
+    value("--dtfixed");
+}
+
+/// "-name:value" and "--name=value" become "--name=value" for CLI11; positional arguments
+/// (and everything after "--") are kept apart. Unknown names, repeated options, values given to
+/// flags and missing values are reported with the argument as written.
+std::vector<std::string> translate(const CLI::App& app, const std::vector<std::string>& args,
+                                   std::map<std::string, Given>& given,
+                                   std::vector<std::string>& positional) {
+    std::vector<std::string> out;
+    bool only_positional = false;
+    for (const std::string& a : args) {
+        if (a == "--" && !only_positional) {
+            only_positional = true;  // what follows is positional, even if it starts with '-'
+            continue;
+        }
+        if (only_positional || a.size() < 2 || a[0] != '-') {
+            positional.push_back(a);
+            continue;
+        }
+        const bool gnu = a[1] == '-';
+        const std::size_t start = gnu ? 2 : 1;
+        const std::size_t sep = a.find(gnu ? '=' : ':', start);
+        Given g{a, sep == std::string::npos ? "" : a.substr(sep + 1), sep != std::string::npos};
+        const std::string name =
+            a.substr(start, sep == std::string::npos ? std::string::npos : sep - start);
+        const CLI::Option* opt = name.empty() ? nullptr : app.get_option_no_throw("--" + name);
+        if (!opt) usageError("unknown option " + a);
+        if (given.count(name))
+            usageError(a + ": -" + name + " is given twice (" + given[name].arg + ")");
+        if (g.has_value && opt->get_items_expected_max() == 0)
+            usageError(a + ": -" + name + " takes no value");
+        if (g.has_value && g.value.empty())
+            usageError(a + ": the value after '" + std::string(1, a[sep]) + "' is missing");
+        if (!g.has_value && opt->get_items_expected_min() > 0)
+            usageError(a + ": needs a value (-" + name + ":VALUE)");
+        out.push_back("--" + name + (g.has_value ? "=" + g.value : ""));
+        given[name] = g;
+    }
+    return out;
+}
+
+/// CLI11's message with DualSPHysics-style names ("--cpu excludes --gpu" -> "-cpu ... -gpu").
+std::string rewrite(std::string m) {
+    for (std::size_t p; (p = m.find("--")) != std::string::npos;) m.erase(p, 1);
+    const std::size_t ex = m.find(" excludes ");
+    if (ex != std::string::npos) m.replace(ex, 10, " cannot be combined with ");
+    return m;
+}
+
+void readOutputs(const Given& g, RunOptions& o) {
+    o.save_h5 = o.save_vtk = false;
+    std::set<std::string> items;
+    std::string rest = g.value;
+    for (std::size_t p = 0;;) {
+        const std::size_t comma = rest.find(',', p);
+        const std::string item =
+            rest.substr(p, comma == std::string::npos ? std::string::npos : comma - p);
+        if (item != "h5" && item != "vtk" && item != "none")
+            usageError(g.arg + ": unknown output \"" + item + "\" (supported: h5, vtk, none)");
+        if (!items.insert(item).second) usageError(g.arg + ": \"" + item + "\" is listed twice");
+        if (comma == std::string::npos) break;
+        p = comma + 1;
+    }
+    if (items.count("none") && items.size() > 1)
+        usageError(g.arg + ": \"none\" cannot be combined with outputs");
+    o.save_h5 = items.count("h5") > 0;
+    o.save_vtk = items.count("vtk") > 0;
+}
+
+void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
+    using B = RunOptions::Backend;
+    for (const auto& [name, g] : given) {
+        if (name == "gpu") {
+            o.backend = B::Gpu;
+            if (g.has_value) o.gpu_id = int(toInteger(g, 0, INT_MAX));
+        } else if (name == "cpu") {
+            o.backend = B::Cpu;
+        } else if (name == "threads") {
+            o.threads = int(toInteger(g, 1, INT_MAX));
+        } else if (name == "tmax") {
+            o.tmax = toDouble(g, Range::Positive);
+        } else if (name == "tout") {
+            o.tout = toDouble(g, Range::Positive);
+        } else if (name == "sv") {
+            readOutputs(g, o);
+        } else if (name == "svres") {
+            if (g.has_value) toInteger(g, 0, 1);  // accepted for DualSPHysics command lines
+        } else if (name == "nsteps") {
+            o.nsteps = toInteger(g, 0, LLONG_MAX);
+        } else if (name == "cellmode") {
+            if (g.value != "full" && g.value != "h")
+                usageError(g.arg + ": \"" + g.value + "\" is not a cell mode (supported: full, h)");
+            o.cell_div = g.value == "full" ? 1 : 2;
+        } else if (name == "progress") {
+            o.progress_interval = toDouble(g, Range::NonNegative);
+        } else if (name == "quiet") {
+            o.quiet = true;
+        } else if (name == "symplectic") {
+            o.step_algorithm = 2;
+        } else if (name == "verlet") {
+            o.step_algorithm = 1;
+            if (g.has_value) o.verlet_steps = int(toInteger(g, 1, INT_MAX));
+        } else if (name == "wendland" || name == "cubic") {
+            o.kernel = name == "cubic" ? 1 : 2;
+        } else if (name == "viscoart" || name == "viscolamsps" || name == "viscolam") {
+            o.visco = toDouble(g, Range::NonNegative);
+            o.visco_treatment = name == "viscoart" ? 1 : name == "viscolamsps" ? 2 : 3;
+        } else if (name == "viscoboundfactor") {
+            o.visco_bound_factor = toDouble(g, Range::NonNegative);
+        } else if (name == "ddt") {
+            o.ddt = int(toInteger(g, 0, 3, " (0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full)"));
+        } else if (name == "ddtvalue") {
+            o.ddt_value = toDouble(g, Range::NonNegative);
+        } else if (name == "cfl") {
+            o.cfl = toDouble(g, Range::Fraction);
+        } else if (name == "dtfixed") {
+            o.dt_fixed = toDouble(g, Range::Positive);
+        } else {
+            SEASPRING_CHECK(false, "option -", name, " is declared but not read");
+        }
+    }
 }
 
 }  // namespace
 
-std::string runOptionsHelp() {
-    return R"(Usage: seaspring [options] OUTDIR/NAME OUTDIR
-Runs the case OUTDIR/NAME (written by gencase) and writes the results to OUTDIR.
-
-Backend:
-  -gpu[:ID]          run on CUDA device ID (default 0); an error when no GPU is usable
-  -cpu               run on the CPU (OpenMP)
-  -threads:N         OpenMP threads for -cpu (default: all cores)
-  (default: the GPU when one is usable, else the CPU)
-Run control:
-  -tmax:T            simulated time [s] (overrides TimeMax)
-  -tout:T            output interval [s] (overrides TimeOut)
-  -nsteps:N          stop after N time steps (tests, benchmarks)
-  -sv:LIST           outputs: h5, vtk, none, comma-separated (default h5)
-  -cellmode:full|h   neighbour cells of 2h or h (default h)
-  -progress:S        progress line every S seconds of wall time (default 1; 0 = off)
-  -quiet             no banner or progress lines (summary and errors only)
-Physics (override the case's <parameters>):
-  -symplectic        symplectic time integration (StepAlgorithm=2)
-  -verlet[:N]        Verlet with an Euler step every N steps (StepAlgorithm=1, VerletSteps=N)
-  -wendland          Wendland C2 kernel (Kernel=2)
-  -cubic             cubic spline kernel (Kernel=1)
-  -viscoart:A        artificial viscosity with alpha A (ViscoTreatment=1, Visco=A)
-  -viscolam:NU       laminar viscosity NU [m^2/s] (ViscoTreatment=3)
-  -viscolamsps:NU    laminar viscosity + SPS turbulence (ViscoTreatment=2)
-  -viscoboundfactor:F  viscosity factor for fluid-boundary pairs
-  -ddt:K             density diffusion 0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full
-  -ddtvalue:D        density diffusion coefficient delta
-  -cfl:C             Courant number, 0 < C <= 1
-  -dtfixed:DT        constant time step [s]
-Other:
-  -h, -help, --help  this text
-  -version           the version
-Output: OUTDIR/parts.xdmf (ParaView time series), OUTDIR/data/part_NNNN.h5, OUTDIR/run.json.
-Exit codes: 0 success, 2 bad command line or input, 1 failure during the run.
-)";
-}
-
 RunOptions parseRunOptions(int argc, const char* const* argv) {
     RunOptions o;
-    std::vector<std::string> positional;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "--help" || arg == "-h" || arg == "-help") {
+    const std::vector<std::string> args(argv + std::min(argc, 1), argv + std::max(argc, 0));
+    for (const std::string& a : args) {
+        if (a == "-h" || a == "-help" || a == "--help") {
             o.help = true;
-            continue;
+            return o;
         }
-        if (arg == "-version" || arg == "--version") {
+        if (a == "-version" || a == "--version") {
             o.version = true;
-            continue;
-        }
-        if (arg.size() < 2 || arg[0] != '-') {
-            positional.push_back(arg);
-            continue;
-        }
-        const auto colon = arg.find(':');
-        const std::string name = arg.substr(1, colon == std::string::npos ? std::string::npos : colon - 1);
-        const bool has_value = colon != std::string::npos;
-        const std::string value = has_value ? arg.substr(colon + 1) : "";
-        auto noValue = [&] {
-            if (has_value) bad(arg, "takes no value");
-        };
-        if (name == "gpu") {
-            o.backend = RunOptions::Backend::Gpu;
-            if (has_value) {
-                const long long id = toInteger(arg, value);
-                if (id < 0 || id > 1024) bad(arg, "the device id must be >= 0");
-                o.gpu_id = int(id);
-            }
-        } else if (name == "cpu") {
-            noValue();
-            o.backend = RunOptions::Backend::Cpu;
-        } else if (name == "threads") {
-            const long long n = toInteger(arg, value);
-            if (n < 1 || n > 4096) bad(arg, "the thread count must be >= 1");
-            o.threads = int(n);
-        } else if (name == "tmax") {
-            o.tmax = toNumber(arg, value);
-            if (!(*o.tmax > 0)) bad(arg, "must be > 0");
-        } else if (name == "tout") {
-            o.tout = toNumber(arg, value);
-            if (!(*o.tout > 0)) bad(arg, "must be > 0");
-        } else if (name == "nsteps") {
-            o.nsteps = toInteger(arg, value);
-            if (*o.nsteps < 0) bad(arg, "must be >= 0");
-        } else if (name == "sv") {
-            o.save_h5 = o.save_vtk = false;
-            std::string rest = value;
-            if (rest.empty()) bad(arg, "a list is required (h5, vtk, none)");
-            while (!rest.empty()) {
-                const auto comma = rest.find(',');
-                const std::string item = rest.substr(0, comma);
-                rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
-                if (item == "h5") o.save_h5 = true;
-                else if (item == "vtk") o.save_vtk = true;
-                else if (item == "none") continue;
-                else bad(arg, "unknown output \"" + item + "\" (h5, vtk, none)");
-            }
-        } else if (name == "cellmode") {
-            if (value == "full" || value == "2h") o.cell_div = 1;
-            else if (value == "h" || value == "half") o.cell_div = 2;
-            else bad(arg, "use -cellmode:full or -cellmode:h");
-        } else if (name == "progress") {
-            o.progress_interval = toNumber(arg, value);
-            if (o.progress_interval < 0) bad(arg, "must be >= 0");
-        } else if (name == "quiet") {
-            noValue();
-            o.quiet = true;
-        } else if (name == "symplectic") {
-            noValue();
-            o.step_algorithm = 2;
-        } else if (name == "verlet") {
-            o.step_algorithm = 1;
-            if (has_value) {
-                const long long n = toInteger(arg, value);
-                if (n < 1) bad(arg, "must be >= 1");
-                o.verlet_steps = int(n);
-            }
-        } else if (name == "wendland") {
-            noValue();
-            o.kernel = 2;
-        } else if (name == "cubic") {
-            noValue();
-            o.kernel = 1;
-        } else if (name == "viscoart" || name == "viscolam" || name == "viscolamsps") {
-            o.visco = toNumber(arg, value);
-            if (*o.visco < 0) bad(arg, "must be >= 0");
-            o.visco_treatment = name == "viscoart" ? 1 : name == "viscolamsps" ? 2 : 3;
-        } else if (name == "viscoboundfactor") {
-            o.visco_bound_factor = toNumber(arg, value);
-            if (*o.visco_bound_factor < 0) bad(arg, "must be >= 0");
-        } else if (name == "ddt") {
-            const long long k = toInteger(arg, value);
-            if (k < 0 || k > 3) bad(arg, "use 0 (none), 1 (Molteni), 2 (Fourtakas) or 3 (Fourtakas full)");
-            o.ddt = int(k);
-        } else if (name == "ddtvalue") {
-            o.ddt_value = toNumber(arg, value);
-            if (*o.ddt_value < 0) bad(arg, "must be >= 0");
-        } else if (name == "cfl") {
-            o.cfl = toNumber(arg, value);
-            if (!(*o.cfl > 0 && *o.cfl <= 1)) bad(arg, "must be in (0, 1]");
-        } else if (name == "dtfixed") {
-            o.dt_fixed = toNumber(arg, value);
-            if (!(*o.dt_fixed > 0)) bad(arg, "must be > 0");
-        } else {
-            bad(arg, "unknown option");
+            return o;
         }
     }
-    if (o.help || o.version) return o;
-    if (positional.size() != 2)
-        throw Error("expected OUTDIR/NAME and OUTDIR (got " + std::to_string(positional.size()) +
-                    " arguments): seaspring [options] OUTDIR/NAME OUTDIR");
+    CLI::App app{"seaspring"};
+    app.set_help_flag();
+    declareOptions(app);
+    std::map<std::string, Given> given;
+    std::vector<std::string> positional;
+    std::vector<std::string> cli = translate(app, args, given, positional);
+    std::reverse(cli.begin(), cli.end());  // CLI11's vector overload parses from the back
+    try {
+        app.parse(cli);
+    } catch (const CLI::ParseError& e) {
+        usageError(rewrite(e.what()));
+    }
+    readValues(given, o);
+    if (positional.size() < 2)
+        usageError(std::string(positional.empty() ? "OUTDIR/NAME and OUTDIR are missing"
+                                                  : "OUTDIR is missing") +
+                   " (usage: " + kUsage + ")");
+    if (positional.size() > 2)
+        usageError("unexpected argument \"" + positional[2] + "\" (usage: " + kUsage + ")");
     o.case_path = positional[0];
     o.outdir = positional[1];
     return o;
+}
+
+std::string runOptionsHelp() {
+    return std::string("Usage: ") + kUsage + "\n" + R"(
+Runs the case OUTDIR/NAME written by `gencase CASE_Def.xml OUTDIR/NAME` (NAME.xml and
+NAME.h5; OUTDIR/NAME.xml may be given too) and writes the results to OUTDIR.
+Options are written -name or -name:value (DualSPHysics style), or --name, --name=value;
+arguments after "--" are taken as OUTDIR/NAME and OUTDIR even when they start with '-'.
+
+Backend:
+  -gpu[:ID]            run on CUDA device ID (default 0); an error when no GPU is usable
+  -cpu                 run on the CPU (OpenMP)
+  -threads:N           OpenMP threads, N >= 1 (default: all cores)
+                       (without -gpu or -cpu: the GPU when one is usable, else the CPU)
+Run control:
+  -tmax:T              simulated time T > 0 [s] (overrides TimeMax)
+  -tout:T              output interval T > 0 [s] (overrides TimeOut)
+  -nsteps:N            stop after N >= 0 time steps (tests, benchmarks)
+  -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
+                       files in OUTDIR/vtk), none
+  -svres[:0|1]         accepted for DualSPHysics command lines; run.json is always written
+  -cellmode:full|h     neighbour cells of size 2h (full) or h (h, the default)
+  -progress:S          a progress line every S >= 0 seconds of wall time (default 1; 0: none)
+  -quiet               no banner or progress lines (summary and errors only)
+Physics (override the case's <parameters>):
+  -symplectic          symplectic time integration (StepAlgorithm=2)
+  -verlet[:N]          Verlet, an Euler step every N >= 1 steps (StepAlgorithm=1, VerletSteps=N)
+  -wendland            Wendland C2 kernel (Kernel=2)
+  -cubic               cubic spline kernel (Kernel=1)
+  -viscoart:A          artificial viscosity, alpha A >= 0 (ViscoTreatment=1, Visco=A)
+  -viscolam:NU         laminar viscosity NU >= 0 [m^2/s] (ViscoTreatment=3, Visco=NU)
+  -viscolamsps:NU      laminar viscosity + SPS turbulence (ViscoTreatment=2, Visco=NU)
+  -viscoboundfactor:F  viscosity factor F >= 0 for fluid-boundary pairs (ViscoBoundFactor)
+  -ddt:K               density diffusion: 0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full
+                       (DensityDT)
+  -ddtvalue:D          density diffusion coefficient delta D >= 0 (DensityDTvalue)
+  -cfl:C               Courant number, 0 < C <= 1 (the case's cflnumber)
+  -dtfixed:DT          constant time step DT > 0 [s] (DtFixed)
+Other:
+  -h, -help, --help    this text
+  -version             the version
+Each option may be given once; -gpu/-cpu, -symplectic/-verlet, -wendland/-cubic and the
+three viscosity options exclude each other.
+
+Output: OUTDIR/parts.xdmf (ParaView time series of OUTDIR/data/part_NNNN.h5) and
+OUTDIR/run.json (run summary).
+Exit codes: 0 success, 2 bad command line or input, 1 failure during the run.
+)";
 }
 
 void applyOverrides(const RunOptions& o, SolverParameters& p) {

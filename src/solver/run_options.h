@@ -1,8 +1,15 @@
 // SeaSpring — MIT licence.
 /// \file run_options.h
 /// \brief The solver's command line, DualSPHysics style:
-///        seaspring [-gpu[:ID]|-cpu] [-threads:N] [-tmax:T] [-tout:T] [-sv:h5,vtk] OUTDIR/NAME OUTDIR
-///        plus physics overrides (-symplectic, -verlet, -wendland, -cubic, -viscoart:A, ...).
+///        `seaspring [-gpu[:ID]|-cpu] [-threads:N] [-tmax:T] [-tout:T] [-sv:h5,vtk] OUTDIR/NAME
+///        OUTDIR` plus physics overrides (-symplectic, -verlet[:N], -wendland, -cubic, -viscoart:A,
+///        ...).
+///
+/// Options are written `-name` or `-name:value` (DualSPHysics) or `--name`, `--name=value`;
+/// runOptionsHelp() lists them all. Values must parse completely and lie in range; an option
+/// given twice, two options that contradict each other (-gpu and -cpu, -symplectic and
+/// -verlet, -wendland and -cubic, two viscosity choices), an unknown option or a wrong number
+/// of positional arguments is a usage error.
 #pragma once
 
 #include <optional>
@@ -14,24 +21,31 @@ namespace seaspring::solver {
 
 struct RunOptions {
     enum class Backend { Auto, Gpu, Cpu };
-    Backend backend = Backend::Auto;
+    Backend backend = Backend::Auto;  ///< Auto: the GPU when one is usable, else the CPU
     int gpu_id = 0;
-    int threads = 0;  ///< 0 = all cores
+    int threads = 0;  ///< OpenMP threads; 0 = all cores
     std::string case_path, outdir;
     bool save_h5 = true, save_vtk = false;
     std::optional<double> tmax, tout, visco, visco_bound_factor, ddt_value, cfl, dt_fixed;
     std::optional<int> step_algorithm, verlet_steps, kernel, visco_treatment, ddt;
-    std::optional<long long> nsteps;
+    std::optional<long long> nsteps;  ///< stop after this many steps
     int cell_div = 2;  ///< 1: cells of 2h (-cellmode:full), 2: cells of h (-cellmode:h)
-    double progress_interval = 1.0;
-    bool quiet = false, help = false, version = false;
+    double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none
+    bool quiet = false;
+    bool help = false, version = false;  ///< set alone: the rest is not parsed
 };
 
-/// Parses argv; throws seaspring::Error with a one-line message naming the bad argument.
+/// Parses argv (argv[0] is the program). -h/-help/--help or -version/--version anywhere
+/// return at once with `help` or `version` set. Throws seaspring::Error with a one-line
+/// message naming the offending argument.
 RunOptions parseRunOptions(int argc, const char* const* argv);
-/// The --help text.
+
+/// The full --help text: usage, every option with its meaning, outputs and exit codes.
 std::string runOptionsHelp();
-/// Command-line values win over the case's parameters.
+
+/// Writes the command-line overrides into the case's parameters (the command line wins):
+/// step algorithm, Verlet steps, kernel, viscosity treatment and value, boundary factor,
+/// density diffusion and its value, CFL number, fixed dt, TimeMax and TimeOut.
 void applyOverrides(const RunOptions& o, SolverParameters& p);
 
 }  // namespace seaspring::solver

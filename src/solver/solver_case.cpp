@@ -1,11 +1,13 @@
 // SeaSpring — MIT licence.
 /// \file solver_case.cpp
-/// \brief Reading and checking the resolved case for the solver.
+/// \brief Reading and checking the resolved case for the solver (see solver_case.h).
 #include "solver/solver_case.h"
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <set>
 
@@ -21,237 +23,434 @@ using gencase::XmlSource;
 
 namespace {
 
-struct RawParameter {
-    std::string value;
-    pugi::xml_node node;
-};
+std::string num(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
 
-class ParameterReader {
+std::string vec(Vec3d v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
+
+/// The `<parameter key value>` entries of `<parameters>`, checked against the key table.
+/// Keys that are absent take the table's default (a required one that is absent is an error).
+class ParameterTable {
 public:
-    ParameterReader(const XmlSource& src, pugi::xml_node params) : src_(src) {
+    ParameterTable(const XmlSource& src, pugi::xml_node params, bool has_fluid)
+        : src_(src), params_(params) {
+        src.checkChildren(params, {"parameter", "simulationdomain"});
         for (pugi::xml_node n : params.children("parameter")) {
-            const std::string key = n.attribute("key").as_string();
-            if (key.empty() || key[0] == '#') continue;
-            if (!findParameter(key))
-                src_.fail(n, "unknown parameter key \"" + key + "\" (the resolved case must come from gencase)");
-            raw_[key] = {n.attribute("value").as_string(), n};
+            src.checkAttributes(n, {"key", "value"});
+            const std::string key = src.text(n, "key");
+            if (!key.empty() && key[0] == '#') continue;  // commented out (DualSPHysics habit)
+            const ParameterInfo* info = findParameter(key);
+            if (!info)
+                src.fail(n,
+                         "key=\"" + key + "\" is not a known parameter (see docs/case-format.md)");
+            if (info->kind == ParameterKind::Deprecated)
+                src.fail(n, "key=\"" + key +
+                                "\" is deprecated and not written by gencase; regenerate the case");
+            if (given_.count(key)) src.fail(n, "key=\"" + key + "\" is given twice");
+            given_[key] = n;
+        }
+        for (const ParameterInfo& info : knownParameters()) {
+            const bool needed =
+                !info.default_value && (std::string(info.key) != "Visco" || has_fluid);
+            if (needed && !given_.count(info.key))
+                src.fail(params, std::string("misses the required parameter ") + info.key + " (" +
+                                     info.meaning + ")");
         }
     }
-    /// The numeric value of `key`, its default when absent.
-    double number(const std::string& key) const {
-        const auto it = raw_.find(key);
-        const ParameterInfo* info = findParameter(key);
-        const std::string text = it != raw_.end() ? it->second.value
-                                                  : std::string(info && info->default_value ? info->default_value : "");
-        if (text.empty()) {
-            if (it != raw_.end()) src_.fail(it->second.node, "parameter " + key + " has no value");
-            throw Error(src_.path() + ": required parameter " + key + " is missing");
-        }
-        try {
-            return gencase::parseNumber(text);
-        } catch (const std::exception&) {
-            if (it != raw_.end())
-                src_.fail(it->second.node, "parameter " + key + "=\"" + text + "\" is not a number");
-            throw Error(src_.path() + ": parameter " + key + "=\"" + text + "\" is not a number");
-        }
-    }
-    int integer(const std::string& key, std::initializer_list<int> allowed, const std::string& meaning) const {
-        const double v = number(key);
-        for (int a : allowed)
-            if (v == a) return a;
-        fail(key, "=" + text(key) + " is not supported by seaspring (supported: " + meaning + ")");
-    }
+
+    /// The value as written, or the default ("" for an absent required key).
     std::string text(const std::string& key) const {
-        const auto it = raw_.find(key);
-        if (it != raw_.end()) return it->second.value;
+        const auto it = given_.find(key);
+        if (it != given_.end()) return it->second.attribute("value").value();
         const ParameterInfo* info = findParameter(key);
         return info && info->default_value ? info->default_value : "";
     }
-    /// Error unless the key keeps its "off" value.
-    void requireOff(const std::string& key, const std::string& off, const std::string& what) const {
+    double number(const std::string& key) const {
         const std::string t = text(key);
-        bool is_off = t == off;
-        if (!is_off) {
-            try {
-                is_off = gencase::parseNumber(t) == gencase::parseNumber(off);
-            } catch (const std::exception&) {
-            }
+        if (t.empty() && !given_.count(key))
+            return 0;  // optional-required key (Visco without fluid)
+        try {
+            return gencase::parseNumber(t);
+        } catch (const std::exception& e) {
+            fail(key, e.what());
         }
-        if (!is_off) fail(key, "=\"" + t + "\": " + what + " is not supported by seaspring");
     }
-    [[noreturn]] void fail(const std::string& key, const std::string& msg) const {
-        const auto it = raw_.find(key);
-        if (it != raw_.end()) src_.fail(it->second.node, "parameter " + key + msg);
-        throw Error(src_.path() + ": parameter " + key + msg);
+    int integer(const std::string& key) const {
+        const double v = number(key);
+        if (v != std::floor(v) || std::fabs(v) > 1e9) fail(key, "expected an integer");
+        return int(v);
     }
-    void positive(const std::string& key, double v) const {
-        if (!(v > 0)) fail(key, "=" + text(key) + " must be > 0");
+    /// One of `allowed`, else "not supported by seaspring (supported: ...)".
+    int choice(const std::string& key, std::initializer_list<int> allowed,
+               const std::string& supported, const std::string& what = "") const {
+        const int v = integer(key);
+        for (int a : allowed)
+            if (v == a) return v;
+        fail(key, (what.empty() ? "" : what + " ") +
+                      "is not supported by seaspring (supported: " + supported + ")");
     }
-    void nonNegative(const std::string& key, double v) const {
-        if (!(v >= 0)) fail(key, "=" + text(key) + " must be >= 0");
+    /// The key must keep the value that switches its feature off.
+    void requireOff(const std::string& key, double off, const std::string& feature) const {
+        if (number(key) != off)
+            fail(key,
+                 feature + " is not supported by seaspring (supported: " + num(off) + ", off)");
+    }
+    void requireNone(const std::string& key, const std::string& feature) const {
+        const std::string t = text(key);
+        if (t != "NONE" && !t.empty())
+            fail(key, feature + " is not supported by seaspring (supported: NONE)");
+    }
+    double atLeast(const std::string& key, double lo, bool inclusive) const {
+        const double v = number(key);
+        if (inclusive ? !(v >= lo) : !(v > lo))
+            fail(key, std::string("must be ") + (inclusive ? ">= " : "> ") + num(lo));
+        return v;
+    }
+    /// "FILE:LINE: <parameter> key="K" value="V": message" (the line of <parameters> when absent).
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+        const auto it = given_.find(key);
+        const pugi::xml_node n = it != given_.end() ? it->second : params_;
+        src_.fail(n, "key=\"" + key + "\" value=\"" + text(key) + "\"" +
+                         (it == given_.end() ? " (default)" : "") + ": " + message);
     }
 
 private:
     const XmlSource& src_;
-    std::map<std::string, RawParameter> raw_;
+    pugi::xml_node params_;
+    std::map<std::string, pugi::xml_node> given_;
 };
+
+SolverParameters readParameters(const ParameterTable& t) {
+    SolverParameters p;
+    t.number("SavePosDouble");  // positions are always double in seaspring
+    t.choice("Boundary", {1}, "1 DBC", "mDBC");
+    t.number("SlipMode");       // mDBC only
+    t.number("NoPenetration");  // mDBC only
+    p.step_algorithm = t.choice("StepAlgorithm", {1, 2}, "1 Verlet, 2 symplectic");
+    p.verlet_steps = t.integer("VerletSteps");
+    if (p.verlet_steps < 1) t.fail("VerletSteps", "must be >= 1");
+    p.kernel = t.choice("Kernel", {1, 2}, "1 cubic spline, 2 Wendland");
+    p.visco_treatment =
+        t.choice("ViscoTreatment", {1, 2, 3}, "1 artificial, 2 laminar+SPS, 3 laminar");
+    p.visco = t.atLeast("Visco", 0, true);
+    p.visco_bound_factor = t.atLeast("ViscoBoundFactor", 0, true);
+    t.requireNone("ViscoTime", "a viscosity-time file");
+    p.density_dt =
+        t.choice("DensityDT", {0, 1, 2, 3}, "0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full");
+    p.density_dt_value = t.atLeast("DensityDTvalue", 0, true);
+    t.choice("Shifting", {0}, "0 none", "particle shifting");
+    t.number("ShiftCoef");  // shifting only
+    t.number("ShiftTFS");   // shifting only
+    t.choice("RigidAlgorithm", {1}, "1, the default; floating bodies are not supported",
+             "a floating-body algorithm");
+    t.requireOff("FtPause", 0, "a floating-body pause");
+    t.requireOff("FtIgnoreRadius", 0, "the floating-body radius option");
+    p.coef_dt_min = t.atLeast("CoefDtMin", 0, false);
+    p.dt_ini = t.atLeast("DtIni", 0, true);
+    p.dt_min = t.atLeast("DtMin", 0, true);
+    p.dt_fixed = t.atLeast("DtFixed", 0, true);
+    t.requireNone("DtFixedFile", "a dt file");
+    p.dt_all_particles = t.choice("DtAllParticles", {0}, "0, dt from the fluid particles") != 0;
+    p.time_max = t.atLeast("TimeMax", 0, false);
+    p.time_out = t.atLeast("TimeOut", 0, false);
+    if (t.number("TimeOutExtra") > 0)
+        t.fail("TimeOutExtra",
+               "extra motion output is not supported by seaspring (supported: <= 0, off)");
+    p.rhop_out_min = t.atLeast("RhopOutMin", 0, true);
+    p.rhop_out_max = t.number("RhopOutMax");
+    if (!(p.rhop_out_max > p.rhop_out_min))
+        t.fail("RhopOutMax", "must exceed RhopOutMin=" + t.text("RhopOutMin"));
+    p.min_fluid_stop = t.atLeast("MinFluidStop", 0, true);
+    if (p.min_fluid_stop > 1) t.fail("MinFluidStop", "is a fraction of the fluid: must be <= 1");
+    p.wrn_parts_out = t.atLeast("WrnPartsOut", 0, true);
+    for (const char* k :
+         {"XPeriodicIncY", "XPeriodicIncZ", "YPeriodicIncX", "YPeriodicIncZ", "ZPeriodicIncX",
+          "ZPeriodicIncY", "XYPeriodic", "XZPeriodic", "YZPeriodic"})
+        t.requireOff(k, 0, "periodic boundaries");
+    t.requireOff("Symmetry", 0, "a symmetry plane");
+    t.requireOff("DivCleanKp", 0, "divergence cleaning");
+    return p;
+}
+
+void checkConstants(const XmlSource& src, pugi::xml_node node, const gencase::CaseConstants& c,
+                    bool has_fluid, bool has_boundary) {
+    auto bad = [&](const char* name, double v, const std::string& why) {
+        src.fail(node.child(name), "value=" + num(v) + ": " + why);
+    };
+    if (c.dimensions != 2 && c.dimensions != 3) bad("dimensions", c.dimensions, "must be 2 or 3");
+    if (!(c.dp > 0)) bad("dp", c.dp, "must be > 0");
+    if (!(c.h > 0)) bad("h", c.h, "must be > 0");
+    if (!(c.speedsound > 0)) bad("speedsound", c.speedsound, "must be > 0");
+    if (!(c.b > 0)) bad("b", c.b, "must be > 0");
+    if (!(c.rhop0 > 0)) bad("rhop0", c.rhop0, "must be > 0");
+    if (c.gamma != 7) bad("gamma", c.gamma, "is not supported by seaspring (supported: 7)");
+    if (!(c.cflnumber > 0 && c.cflnumber <= 1)) bad("cflnumber", c.cflnumber, "must lie in (0, 1]");
+    if (has_fluid && !(c.massfluid > 0)) bad("massfluid", c.massfluid, "must be > 0");
+    if (has_boundary && !(c.massbound > 0)) bad("massbound", c.massbound, "must be > 0");
+}
+
+/// A non-negative integer attribute written as plain digits.
+std::uint32_t count(const XmlSource& src, pugi::xml_node n, const char* attr,
+                    std::uint32_t max = 0xffffffffu) {
+    const std::string t = src.text(n, attr);
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(t.c_str(), &end, 10);
+    if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || *end || v > max)
+        src.fail(n, std::string("attribute ") + attr + "=\"" + t +
+                        "\": expected an integer in 0.." + std::to_string(max));
+    return std::uint32_t(v);
+}
 
 ParticleType blockType(const XmlSource& src, pugi::xml_node n) {
     const std::string name = n.name();
-    if (name == "fixed") return ParticleType::Fixed;
-    if (name == "moving") return ParticleType::Moving;
-    if (name == "solid") return ParticleType::Solid;
-    if (name == "fluid") return ParticleType::Fluid;
-    src.fail(n, "unknown particle block (expected fixed, moving, solid or fluid)");
+    for (ParticleType t :
+         {ParticleType::Fixed, ParticleType::Moving, ParticleType::Solid, ParticleType::Fluid})
+        if (name == particleTypeName(t)) return t;
+    src.fail(n, "is not a particle block (expected fixed, moving, solid or fluid)");
 }
 
-std::uint32_t uattr(const XmlSource& src, pugi::xml_node n, const char* a) {
-    const pugi::xml_attribute at = n.attribute(a);
-    if (!at) src.fail(n, std::string("attribute ") + a + " is missing");
-    const double v = gencase::parseNumber(at.as_string());
-    if (!(v >= 0) || v != std::floor(v) || v > 4294967295.0)
-        src.fail(n, std::string("attribute ") + a + "=\"" + at.as_string() + "\" is not a count");
-    return std::uint32_t(v);
+/// Reads <particles> into c.blocks and the counts; returns the block elements (same order).
+std::vector<pugi::xml_node> readBlocks(const XmlSource& src, pugi::xml_node parts, SolverCase& c,
+                                       std::uint32_t& np) {
+    std::vector<pugi::xml_node> nodes;
+    src.checkAttributes(
+        parts, {"np", "nfixed", "nmoving", "nsolid", "nfluid", "mkboundfirst", "mkfluidfirst"});
+    np = count(src, parts, "np");
+    c.nfixed = count(src, parts, "nfixed");
+    c.nmoving = count(src, parts, "nmoving");
+    c.nsolid = count(src, parts, "nsolid");
+    c.nfluid = count(src, parts, "nfluid");
+    if (std::uint64_t(c.nfixed) + c.nmoving + c.nsolid + c.nfluid != np)
+        src.fail(parts,
+                 "np=" + std::to_string(np) + " differs from nfixed+nmoving+nsolid+nfluid=" +
+                     std::to_string(std::uint64_t(c.nfixed) + c.nmoving + c.nsolid + c.nfluid));
+    std::uint64_t next = 0, by_type[4] = {0, 0, 0, 0};
+    std::set<int> mks;
+    for (pugi::xml_node n : parts.children()) {
+        if (n.type() != pugi::node_element) continue;
+        MkBlock b;
+        b.type = blockType(src, n);
+        const char* local = b.type == ParticleType::Fluid ? "mkfluid" : "mkbound";
+        src.checkAttributes(n, {"mk", local, "begin", "count"});
+        b.mk = int(count(src, n, "mk", 65535));
+        b.mk_local = int(count(src, n, local, 65535));
+        b.begin = count(src, n, "begin");
+        b.count = count(src, n, "count");
+        if (b.begin != next)
+            src.fail(n, "begin=" + std::to_string(b.begin) +
+                            ": blocks must follow each other (expected " + std::to_string(next) +
+                            ")");
+        if (!c.blocks.empty() && b.type < c.blocks.back().type)
+            src.fail(n, "comes after a " + std::string(particleTypeName(c.blocks.back().type)) +
+                            " block (order: fixed, moving, solid, fluid)");
+        if (!mks.insert(b.mk).second)
+            src.fail(n, "mk=" + std::to_string(b.mk) + " has a second block");
+        next += b.count;
+        by_type[int(b.type)] += b.count;
+        c.blocks.push_back(b);
+        nodes.push_back(n);
+    }
+    if (next != np)
+        src.fail(parts, "np=" + std::to_string(np) + " but its blocks hold " +
+                            std::to_string(next) + " particles");
+    const std::uint32_t declared[4] = {c.nfixed, c.nmoving, c.nsolid, c.nfluid};
+    for (int t = 0; t < 4; ++t)
+        if (by_type[t] != declared[t])
+            src.fail(parts, std::string("n") + particleTypeName(ParticleType(t)) + "=" +
+                                std::to_string(declared[t]) + " but its " +
+                                particleTypeName(ParticleType(t)) + " blocks hold " +
+                                std::to_string(by_type[t]) + " particles");
+    return nodes;
+}
+
+void readDomain(const XmlSource& src, pugi::xml_node params, SolverCase& c) {
+    src.checkUnique(params, {"simulationdomain"});
+    const pugi::xml_node dom = src.child(params, "simulationdomain");
+    src.checkChildren(dom, {"posmin", "posmax"});
+    const gencase::ExpressionEvaluator ev;
+    c.domain_min = src.vec3(src.child(dom, "posmin"), ev);
+    c.domain_max = src.vec3(src.child(dom, "posmax"), ev);
+    const double lo[3] = {c.domain_min.x, c.domain_min.y, c.domain_min.z};
+    const double hi[3] = {c.domain_max.x, c.domain_max.y, c.domain_max.z};
+    for (int k = 0; k < 3; ++k) {
+        const bool flat_ok = k == 1 && c.constants.dimensions == 2;
+        if (flat_ok ? !(lo[k] <= hi[k]) : !(lo[k] < hi[k]))
+            src.fail(dom, "posmin " + vec(c.domain_min) + " must lie below posmax " +
+                              vec(c.domain_max) + " in " + "xyz"[k]);
+    }
+}
+
+/// The particle file against the XML: counts, dimensions, dp, each particle's type and MK,
+/// positions inside the domain.
+void checkParticles(const XmlSource& src, pugi::xml_node parts,
+                    const std::vector<pugi::xml_node>& block_nodes, pugi::xml_node constants,
+                    pugi::xml_node dom, const SolverCase& c, const io::CaseFileContents& h5,
+                    std::uint32_t np) {
+    const std::string& f = c.h5_path;
+    if (h5.particles.size() != np)
+        src.fail(parts, "np=" + std::to_string(np) + " but " + f + " holds " +
+                            std::to_string(h5.particles.size()) + " particles");
+    if (h5.header.dimensions != c.constants.dimensions)
+        throw Error(f + ": dimensions=" + std::to_string(h5.header.dimensions) + " but " +
+                    src.where(constants.child("dimensions")) + " <dimensions> says " +
+                    std::to_string(c.constants.dimensions));
+    if (std::fabs(h5.header.dp - c.constants.dp) > 1e-12 * c.constants.dp)
+        throw Error(f + ": dp=" + num(h5.header.dp) + " but " + src.where(constants.child("dp")) +
+                    " <dp> says " + num(c.constants.dp));
+    std::size_t b = 0;
+    for (std::uint32_t i = 0; i < np; ++i) {
+        while (i >= c.blocks[b].begin + c.blocks[b].count) ++b;  // the blocks cover 0..np-1
+        const MkBlock& blk = c.blocks[b];
+        if (h5.particles.type[i] != blk.type || h5.particles.mk[i] != blk.mk)
+            throw Error(f + ": particle " + std::to_string(i) + " is " +
+                        particleTypeName(h5.particles.type[i]) + " mk " +
+                        std::to_string(h5.particles.mk[i]) + " but " + src.where(block_nodes[b]) +
+                        " <" + particleTypeName(blk.type) + " mk=" + std::to_string(blk.mk) +
+                        "> covers ids " + std::to_string(blk.begin) + ".." +
+                        std::to_string(blk.begin + blk.count - 1));
+        const Vec3d p = h5.particles.pos[i];
+        if (!(p.x >= c.domain_min.x && p.x <= c.domain_max.x && p.y >= c.domain_min.y &&
+              p.y <= c.domain_max.y && p.z >= c.domain_min.z && p.z <= c.domain_max.z))
+            throw Error(f + ": particle " + std::to_string(i) + " at " + vec(p) + " lies outside " +
+                        src.where(dom) + " <simulationdomain> " + vec(c.domain_min) + " - " +
+                        vec(c.domain_max));
+    }
+}
+
+/// The resolved <vcpmsolids> summary against the bonds of the particle file.
+void checkSolids(const XmlSource& src, pugi::xml_node exec, SolverCase& c,
+                 const io::CaseFileContents& h5) {
+    const pugi::xml_node v = exec.child("vcpmsolids");
+    if (c.nsolid == 0) {
+        if (v) src.fail(v, "is present but <particles> has no solid block");
+        if (h5.has_bonds)
+            throw Error(c.h5_path + ": has bonds but the case has no solid particles");
+        return;
+    }
+    if (!v)
+        src.fail(exec.child("particles"),
+                 "has solid particles but <execution> has no <vcpmsolids>");
+    if (!h5.has_bonds)
+        throw Error(c.h5_path + ": has no bonds but the case has " + std::to_string(c.nsolid) +
+                    " solid particles");
+    src.checkChildren(v, {"solid"});
+    const std::uint32_t particles = count(src, v, "particles"), slots = count(src, v, "bondslots");
+    if (particles != c.nsolid)
+        src.fail(v, "particles=" + std::to_string(particles) +
+                        " but nsolid=" + std::to_string(c.nsolid));
+    if (slots != h5.bonds.bondSlots())
+        src.fail(v, "bondslots=" + std::to_string(slots) + " but " + c.h5_path + " holds " +
+                        std::to_string(h5.bonds.bondSlots()) + " bond slots");
+    if (h5.bonds.first_solid != c.nfixed + c.nmoving)
+        throw Error(c.h5_path + ": bonds start at particle " +
+                    std::to_string(h5.bonds.first_solid) + " but the solid block starts at " +
+                    std::to_string(c.nfixed + c.nmoving));
+    for (pugi::xml_node s : v.children("solid")) {
+        (void)s;
+        ++c.solid_bodies;
+    }
+    c.bonds = h5.bonds;
+}
+
+void readSpecial(const XmlSource& src, pugi::xml_node special, SolverCase& c) {
+    for (pugi::xml_node n : special.children()) {
+        if (XmlSource::isDisabled(n)) continue;
+        const std::string name = n.name();
+        if (name == "gauges" || name == "savedt")
+            c.notes.push_back(src.where(n) + ": <" + name +
+                              "> is not evaluated by seaspring (ignored)");
+        else if (name != "vcpmsolids" && name != "flexstrucs")
+            src.fail(
+                n,
+                "is not supported by seaspring (supported in <special>: vcpmsolids, flexstrucs, "
+                "gauges and savedt, the last two ignored)");
+    }
+}
+
+std::string resolveXmlPath(const std::string& path) {
+    const fs::path p(path);
+    if (p.extension() == ".xml") return path;
+    if (p.extension() == ".h5") return fs::path(p).replace_extension(".xml").string();
+    return path + ".xml";
 }
 
 }  // namespace
 
 SolverCase loadSolverCase(const std::string& path) {
     SolverCase c;
-    std::string xml = path;
-    if (fs::path(xml).extension() != ".xml") xml += ".xml";
-    if (!fs::exists(xml)) throw Error(xml + ": no such file (give OUTDIR/NAME as written by gencase)");
-    c.xml_path = xml;
-    XmlSource src(xml);
+    c.xml_path = resolveXmlPath(path);
+    if (!fs::is_regular_file(c.xml_path))
+        throw Error(c.xml_path +
+                    ": no such case file (give OUTDIR/NAME as written by `gencase CASE_Def.xml "
+                    "OUTDIR/NAME`)");
+    c.name = fs::path(c.xml_path).stem().string();
+    const XmlSource src(c.xml_path);
     const pugi::xml_node root = src.root();
     if (std::string(root.name()) != "case") src.fail(root, "the root element must be <case>");
-    c.name = fs::path(xml).stem().string();
+    src.checkChildren(root, {"casedef", "execution"});
+    src.checkUnique(root, {"casedef", "execution"});
     const pugi::xml_node exec = src.child(root, "execution");
-    const pugi::xml_node params = src.child(exec, "parameters");
+    const std::initializer_list<const char*> sections = {
+        "special", "parameters", "constants", "particles", "motion", "vcpmsolids", "files"};
+    src.checkChildren(exec, sections);
+    src.checkUnique(exec, sections);
+    if (pugi::xml_node sp = exec.child("special")) readSpecial(src, sp, c);
+
+    const pugi::xml_node parts = src.child(exec, "particles");
+    std::uint32_t np = 0;
+    const std::vector<pugi::xml_node> block_nodes = readBlocks(src, parts, c, np);
     const pugi::xml_node constants = src.child(exec, "constants");
     c.constants = gencase::readConstants(src, constants);
+    checkConstants(src, constants, c.constants, c.nfluid > 0, c.nfixed + c.nmoving > 0);
 
-    // Parameters.
-    const ParameterReader pr(src, params);
-    SolverParameters& p = c.params;
-    p.step_algorithm = pr.integer("StepAlgorithm", {1, 2}, "1 Verlet, 2 symplectic");
-    p.verlet_steps = int(pr.number("VerletSteps"));
-    if (p.verlet_steps < 1) pr.fail("VerletSteps", "=" + pr.text("VerletSteps") + " must be >= 1");
-    p.kernel = pr.integer("Kernel", {1, 2}, "1 cubic spline, 2 Wendland");
-    p.visco_treatment = pr.integer("ViscoTreatment", {1, 2, 3}, "1 artificial, 2 laminar+SPS, 3 laminar");
-    p.visco = pr.number("Visco");
-    pr.nonNegative("Visco", p.visco);
-    p.visco_bound_factor = pr.number("ViscoBoundFactor");
-    pr.nonNegative("ViscoBoundFactor", p.visco_bound_factor);
-    p.density_dt = pr.integer("DensityDT", {0, 1, 2, 3}, "0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full");
-    p.density_dt_value = pr.number("DensityDTvalue");
-    pr.nonNegative("DensityDTvalue", p.density_dt_value);
-    p.coef_dt_min = pr.number("CoefDtMin");
-    pr.positive("CoefDtMin", p.coef_dt_min);
-    p.dt_ini = pr.number("DtIni");
-    pr.nonNegative("DtIni", p.dt_ini);
-    p.dt_min = pr.number("DtMin");
-    pr.nonNegative("DtMin", p.dt_min);
-    p.dt_fixed = pr.number("DtFixed");
-    pr.nonNegative("DtFixed", p.dt_fixed);
-    p.dt_all_particles = pr.integer("DtAllParticles", {0}, "0: dt from fluid particles") != 0;
-    p.time_max = pr.number("TimeMax");
-    pr.positive("TimeMax", p.time_max);
-    p.time_out = pr.number("TimeOut");
-    pr.positive("TimeOut", p.time_out);
-    p.rhop_out_min = pr.number("RhopOutMin");
-    p.rhop_out_max = pr.number("RhopOutMax");
-    if (!(p.rhop_out_min < p.rhop_out_max))
-        pr.fail("RhopOutMax", "=" + pr.text("RhopOutMax") + " must exceed RhopOutMin=" + pr.text("RhopOutMin"));
-    p.min_fluid_stop = pr.number("MinFluidStop");
-    pr.nonNegative("MinFluidStop", p.min_fluid_stop);
-    p.wrn_parts_out = pr.number("WrnPartsOut");
-    p.cfl_number = c.constants.cflnumber;
-    pr.integer("Boundary", {1}, "1 DBC; mDBC is not implemented");
-    pr.requireOff("Shifting", "0", "particle shifting");
-    pr.requireOff("ViscoTime", "NONE", "a viscosity time table");
-    pr.requireOff("DtFixedFile", "NONE", "a dt file");
-    for (const char* k : {"XPeriodicIncY", "XPeriodicIncZ", "YPeriodicIncX", "YPeriodicIncZ", "ZPeriodicIncX",
-                          "ZPeriodicIncY", "XYPeriodic", "XZPeriodic", "YZPeriodic"})
-        pr.requireOff(k, "0", "periodic boundaries");
-    pr.requireOff("Symmetry", "0", "a symmetry plane");
-    if (!(c.constants.h > 0 && c.constants.speedsound > 0 && c.constants.b > 0 && c.constants.dp > 0))
-        src.fail(constants, "h, speedsound, b and dp must be > 0");
-    if (!(c.constants.cflnumber > 0 && c.constants.cflnumber <= 1))
-        src.fail(constants, "cflnumber must be in (0, 1]");
+    const pugi::xml_node params = src.child(exec, "parameters");
+    c.params = readParameters(ParameterTable(src, params, c.nfluid > 0));
+    c.params.cfl_number = c.constants.cflnumber;
+    readDomain(src, params, c);
 
-    // Domain.
-    const pugi::xml_node dom = src.child(params, "simulationdomain");
-    const gencase::ExpressionEvaluator ev;
-    c.domain_min = src.vec3(src.child(dom, "posmin"), ev);
-    c.domain_max = src.vec3(src.child(dom, "posmax"), ev);
-    if (!(c.domain_min.x <= c.domain_max.x && c.domain_min.y <= c.domain_max.y && c.domain_min.z <= c.domain_max.z))
-        src.fail(dom, "posmin must not exceed posmax");
-
-    // Particle blocks.
-    const pugi::xml_node parts = src.child(exec, "particles");
-    const std::uint32_t np = uattr(src, parts, "np");
-    c.nfixed = uattr(src, parts, "nfixed");
-    c.nmoving = uattr(src, parts, "nmoving");
-    c.nsolid = uattr(src, parts, "nsolid");
-    c.nfluid = uattr(src, parts, "nfluid");
-    if (std::uint64_t(c.nfixed) + c.nmoving + c.nsolid + c.nfluid != np)
-        src.fail(parts, "nfixed+nmoving+nsolid+nfluid differs from np=" + std::to_string(np));
-    std::uint32_t next = 0;
-    for (pugi::xml_node n : parts.children()) {
-        if (n.type() != pugi::node_element) continue;
-        MkBlock b;
-        b.type = blockType(src, n);
-        b.mk = int(uattr(src, n, "mk"));
-        b.mk_local = int(uattr(src, n, b.type == ParticleType::Fluid ? "mkfluid" : "mkbound"));
-        b.begin = uattr(src, n, "begin");
-        b.count = uattr(src, n, "count");
-        if (b.begin != next) src.fail(n, "block begins at " + std::to_string(b.begin) + ", expected " + std::to_string(next));
-        next = b.begin + b.count;
-        c.blocks.push_back(b);
-    }
-    if (next != np) src.fail(parts, "the blocks hold " + std::to_string(next) + " particles, np is " + std::to_string(np));
-
-    // Motion.
     if (pugi::xml_node m = exec.child("motion")) c.motion = gencase::readMotion(src, m);
+    for (std::size_t b = 0; b < c.blocks.size(); ++b)
+        if (c.blocks[b].type == ParticleType::Moving && !c.motion.find(c.blocks[b].mk_local))
+            src.fail(block_nodes[b], "mkbound=" + std::to_string(c.blocks[b].mk_local) +
+                                         " is a moving boundary without <objreal ref=\"" +
+                                         std::to_string(c.blocks[b].mk_local) + "\"> in <motion>");
 
-    // Particles.
     const pugi::xml_node files = src.child(exec, "files");
-    c.h5_path = (fs::path(src.directory()) / src.text(files, "particles")).string();
-    if (!fs::exists(c.h5_path)) src.fail(files, "particle file " + c.h5_path + " does not exist");
+    src.checkAttributes(files, {"particles"});
+    const std::string h5_name = src.text(files, "particles");
+    c.h5_path = (fs::path(src.directory()) / h5_name).string();
+    if (!fs::is_regular_file(c.h5_path))
+        src.fail(files, "particles=\"" + h5_name + "\": " + c.h5_path +
+                            " does not exist (run gencase again)");
     io::CaseFileContents h5 = io::readCaseH5(c.h5_path);
-    if (h5.particles.size() != np)
-        throw Error(c.h5_path + ": holds " + std::to_string(h5.particles.size()) + " particles but " + src.where(parts) +
-                    " says np=" + std::to_string(np));
-    if (h5.header.dimensions != c.constants.dimensions)
-        throw Error(c.h5_path + ": dimensions " + std::to_string(h5.header.dimensions) + " differ from the case's " +
-                    std::to_string(c.constants.dimensions));
-    for (const MkBlock& b : c.blocks)
-        for (std::uint32_t i = b.begin; i < b.begin + b.count; ++i)
-            if (h5.particles.type[i] != b.type || h5.particles.mk[i] != b.mk)
-                throw Error(c.h5_path + ": particle " + std::to_string(i) + " (type " +
-                            particleTypeName(h5.particles.type[i]) + ", mk " + std::to_string(h5.particles.mk[i]) +
-                            ") does not match its block at " + src.where(parts) + " (type " +
-                            particleTypeName(b.type) + ", mk " + std::to_string(b.mk) + ")");
+    checkParticles(src, parts, block_nodes, constants, params.child("simulationdomain"), c, h5, np);
+    checkSolids(src, exec, c, h5);
     c.particles = std::move(h5.particles);
-    if (h5.has_bonds) c.bonds = std::move(h5.bonds);
     return c;
 }
 
 std::vector<std::string> describeCase(const SolverCase& c) {
+    const gencase::CaseConstants& k = c.constants;
     std::vector<std::string> out;
-    char line[320];
-    std::snprintf(line, sizeof line, "particles: %zu (fixed %u, moving %u, solid %u, fluid %u), %dD",
-                  c.particles.size(), c.nfixed, c.nmoving, c.nsolid, c.nfluid, c.constants.dimensions);
-    out.push_back(line);
-    std::snprintf(line, sizeof line, "dp=%g m  h=%.6g m  c0=%.6g m/s  B=%.6g Pa  rho0=%g  mass fluid=%.6g bound=%.6g kg",
-                  c.constants.dp, c.constants.h, c.constants.speedsound, c.constants.b, c.constants.rhop0,
-                  c.constants.massfluid, c.constants.massbound);
-    out.push_back(line);
-    std::snprintf(line, sizeof line, "domain: (%g, %g, %g) - (%g, %g, %g) m", c.domain_min.x, c.domain_min.y,
-                  c.domain_min.z, c.domain_max.x, c.domain_max.y, c.domain_max.z);
-    out.push_back(line);
-    if (!c.motion.empty()) out.push_back("motion objects: " + std::to_string(c.motion.objects.size()));
+    out.push_back("particles: " + std::to_string(c.particles.size()) + " (fixed " +
+                  std::to_string(c.nfixed) + ", moving " + std::to_string(c.nmoving) + ", solid " +
+                  std::to_string(c.nsolid) + ", fluid " + std::to_string(c.nfluid) + "), " +
+                  std::to_string(k.dimensions) + "D");
+    out.push_back("dp=" + num(k.dp) + " m, h=" + num(k.h) + " m, c0=" + num(k.speedsound) +
+                  " m/s, B=" + num(k.b) + " Pa, rho0=" + num(k.rhop0) +
+                  " kg/m^3, gamma=" + num(k.gamma));
+    out.push_back("mass: fluid " + num(k.massfluid) + " kg, boundary " + num(k.massbound) + " kg");
+    out.push_back("domain: " + vec(c.domain_min) + " - " + vec(c.domain_max) + " m");
+    if (!c.motion.empty())
+        out.push_back("motion: " + std::to_string(c.motion.objects.size()) + " object(s)");
+    if (c.bonds)
+        out.push_back("VCPM solids: " + std::to_string(c.solid_bodies) + " bod" +
+                      (c.solid_bodies == 1 ? "y" : "ies") + ", " +
+                      std::to_string(c.bonds->bondSlots()) + " bond slots");
+    for (const std::string& n : c.notes) out.push_back("note: " + n);
     return out;
 }
 
