@@ -5,7 +5,7 @@
 # no output. Prints ns per particle per step next to DualSPHysics 5.4's numbers (H200) and
 # writes bench_fluid.csv in the work folder.
 #
-# Usage: tools/bench_fluid.sh [-gpu|-cpu -threads:N] [DP ...]   (default DPs: 0.01 0.0063 0.004)
+# Usage: tools/bench_fluid.sh [-gpu|-cpu -threads:N] [DP ...]   (default DPs: 0.01 0.006 0.004)
 # Env: SEASPRING_BIN (folder with seaspring and gencase; default build/bin),
 #      BENCH_DIR (work folder; default /tmp/seaspring_bench), BENCH_CASE (case XML),
 #      BENCH_TMAX (default 0.02).
@@ -23,7 +23,7 @@ for a in "$@"; do
     *) dps+=("$a") ;;
   esac
 done
-[[ ${#dps[@]} -eq 0 ]] && dps=(0.01 0.0063 0.004)
+[[ ${#dps[@]} -eq 0 ]] && dps=(0.01 0.006 0.004)
 mkdir -p "$work"
 csv="$work/bench_fluid.csv"
 echo "dp,particles,steps,loop_s,steps_per_s,ns_per_particle_step,device,backend,threads,state_hash" >"$csv"
@@ -43,6 +43,12 @@ print(f"{sys.argv[2]},{r['particles']['total']},{r['steps']},{r['loop_time_s']:.
 PY
 done
 echo "SeaSpring fluid benchmark (SPHERIC Test 2, first $tmax s; symplectic, Wendland, DDT 3, artificial viscosity, DBC):"
-column -s, -t <"$csv"
+/usr/bin/env python3 - "$csv" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+w = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+for r in rows:
+    print("  ".join(c.ljust(w[i]) for i, c in enumerate(r)))
+PY
 echo "DualSPHysics 5.4 on an H200 (same inputs): 1.12 M 4.58 ns, 4.36 M 4.48 ns, 13.29 M 4.74 ns per particle per step."
 echo "DualSPHysics 5.4 CPU, 2 threads, Spheric2Dam_100K on the 2-core dev machine: 3.0 us per particle per step."

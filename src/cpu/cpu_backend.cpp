@@ -38,6 +38,7 @@ physics::ParticleView CpuArrays::view() {
     v.velrho = velrho.data();
     v.excl = excl.data();
     v.poscell = poscell.data();
+    v.press_ovrho = press_ovrho.data();
     v.pos_pre = pos_pre.data();
     v.velrho_pre = velrho_pre.data();
     v.acear = acear.data();
@@ -93,6 +94,7 @@ public:
         a_.velrho = s.velrho;
         a_.excl.assign(np, physics::kActive);
         a_.poscell.resize(np);
+        a_.press_ovrho.resize(np);
         a_.pos_pre = a_.pos;
         a_.velrho_pre = a_.velrho;
         a_.acear.assign(np, physics::Float4{0, 0, 0, 0});

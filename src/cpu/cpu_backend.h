@@ -16,6 +16,7 @@ struct CpuArrays {
     std::vector<std::uint32_t> id;
     std::vector<physics::Double3> pos, pos_pre;
     std::vector<physics::Float4> velrho, velrho_pre, poscell, acear;
+    std::vector<physics::Float2> press_ovrho;
     std::vector<std::uint8_t> excl;
     std::vector<float> visc;
     std::vector<physics::SymTensor> tau, gradvel;

@@ -23,10 +23,13 @@ physics::DtMaxima cpuForcesFor(CpuArrays& a, std::uint32_t nbound, std::uint32_t
     in.cell_start_bound = a.cell_start_bound.data();
     in.cell_start_fluid = a.cell_start_fluid.data();
     in.tau = Opt::sps ? a.tau.data() : nullptr;
+    in.press_ovrho = a.press_ovrho.data();
     const std::int64_t nb = nbound, np = std::int64_t(nbound) + nfluid;
     const ParticleView v = a.view();
 #pragma omp parallel
     {
+#pragma omp for schedule(static)
+        for (std::int64_t i = 0; i < np; ++i) pressureAt(std::uint32_t(i), v, c);
 #pragma omp for schedule(dynamic, 512) nowait
         for (std::int64_t i = 0; i < nb; ++i) {
             float ar, visc;

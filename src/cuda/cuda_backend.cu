@@ -95,6 +95,11 @@ __global__ void verletKernel(std::uint32_t n, std::uint32_t nbound, physics::Par
 
 }  // namespace
 
+__global__ void pressureKernel(std::uint32_t np, physics::ParticleView v, physics::FluidConstants c) {
+    const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < np) physics::pressureAt(i, v, c);
+}
+
 __global__ void spsTauKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v, float smag, float blin) {
     const std::uint32_t i = nbound + blockIdx.x * blockDim.x + threadIdx.x;
     if (i < np) physics::spsTauAt(i, v, smag, blin);
@@ -171,6 +176,7 @@ public:
         velrho_.upload(s.velrho);
         excl_.upload(std::vector<std::uint8_t>(np, physics::kActive));
         poscell_.resize(np);
+        press_ovrho_.resize(np);
         pos_pre_.upload(s.pos);
         velrho_pre_.upload(s.velrho);
         acear_.upload(std::vector<physics::Float4>(np, physics::Float4{0, 0, 0, 0}));
@@ -255,6 +261,7 @@ public:
     }
 
     std::uint32_t activeFluid() const override { return nfluid_; }
+    void synchronize() override { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
 
     void download(solver::HostState& out) override {
         SEASPRING_CUDA_CHECK(cudaDeviceSynchronize());
@@ -284,6 +291,7 @@ private:
         v.velrho = velrho_.data();
         v.excl = excl_.data();
         v.poscell = poscell_.data();
+        v.press_ovrho = press_ovrho_.data();
         v.pos_pre = pos_pre_.data();
         v.velrho_pre = velrho_pre_.data();
         v.acear = acear_.data();
@@ -350,6 +358,7 @@ private:
     DeviceBuffer<physics::Float4> velrho_, velrho_pre_, poscell_, acear_, scratch_f4_;
     DeviceBuffer<std::uint8_t> excl_, scratch_u8_, sort_temp_;
     DeviceBuffer<float> visc_;
+    DeviceBuffer<physics::Float2> press_ovrho_;
     DeviceBuffer<physics::SymTensor> tau_, gradvel_, scratch_t_;
     DeviceBuffer<std::uint64_t> keys_, keys_alt_;
     DeviceBuffer<std::uint16_t> moving_object_;

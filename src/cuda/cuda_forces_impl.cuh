@@ -13,6 +13,8 @@ namespace seaspring::cuda {
 
 constexpr int kForceThreads = 128;
 
+__global__ void pressureKernel(std::uint32_t np, physics::ParticleView v, physics::FluidConstants c);
+
 template <class Opt>
 __global__ void __launch_bounds__(kForceThreads)
 fluidForcesKernel(std::uint32_t nbound, std::uint32_t np, physics::InteractionInputs in,
@@ -56,7 +58,12 @@ physics::DtMaxima cudaForcesFor(DeviceArrays& a, std::uint32_t nbound, std::uint
     in.cell_start_bound = a.cell_start_bound;
     in.cell_start_fluid = a.cell_start_fluid;
     in.tau = Opt::sps ? a.v.tau : nullptr;
+    in.press_ovrho = a.v.press_ovrho;
     const std::uint32_t np = nbound + nfluid;
+    if (np > 0) {
+        pressureKernel<<<(np + 255) / 256, 256>>>(np, a.v, c);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+    }
     if (nfluid > 0) {
         fluidForcesKernel<Opt><<<(nfluid + kForceThreads - 1) / kForceThreads, kForceThreads>>>(
             nbound, np, in, c, g, a.v);

@@ -1,11 +1,19 @@
 // SeaSpring — MIT licence.
 /// \file part_output.h
-/// \brief The solver's per-output-time particle files OUTDIR/data/part_NNNN.h5.
+/// \brief The solver's particle file of one output time, OUTDIR/data/part_NNNN.h5.
 ///
-/// Layout: /pos (np x 3 float64), /vel (np x 3 float32), /rhop, /press (float32), /id (uint32),
-/// /type (uint8), /mk (uint16), /excluded (uint8: 0 active, 1 left the domain, 2 density out
-/// of range, 3 not finite); root attributes time, step, np, format = "SeaSpring part",
-/// format_version = 1. Particles in id order.
+/// Layout (format "SeaSpring part", format_version 1), every dataset contiguous (neither
+/// chunked nor compressed: output speed comes first), particles in id order:
+///   /pos   float64 [np x 3] [m]        /vel      float32 [np x 3] [m/s]
+///   /rhop  float32 [np] [kg/m^3]        /press    float32 [np] [Pa]
+///   /id    uint32 [np]                  /type     uint8 [np] (ParticleType values)
+///   /mk    uint16 [np]                  /excluded uint8 [np] (0 active, >0 excluded: 1 left
+///                                                  the domain, 2 density out of range,
+///                                                  3 not finite)
+///   root attributes: time (float64 [s]), step (int64, time steps done), np (int64),
+///                    format (string), format_version (int64)
+/// np = 0 is valid (empty datasets). The file is written as "part_NNNN.h5.tmp" and renamed
+/// when complete, so a crash never leaves a half-written part_NNNN.h5.
 #pragma once
 
 #include <cstddef>
@@ -15,34 +23,51 @@
 
 namespace seaspring::io {
 
+/// Value of the root attribute "format".
+inline constexpr const char* kPartFormat = "SeaSpring part";
+/// Value of the root attribute "format_version" this code writes and reads.
+inline constexpr int kPartFormatVersion = 1;
+
+/// One output time; particles in id order (array index = particle id). The arrays are
+/// borrowed, not copied; each may be nullptr only when np == 0.
 struct PartFrame {
-    int index = 0;
-    double time = 0;
-    long long step = 0;
-    std::size_t np = 0;
-    const double* pos = nullptr;
-    const float* vel = nullptr;
-    const float* rhop = nullptr;
-    const float* press = nullptr;
-    const std::uint32_t* id = nullptr;
-    const std::uint8_t* type = nullptr;
-    const std::uint16_t* mk = nullptr;
-    const std::uint8_t* excluded = nullptr;
+    int index = 0;            ///< output number: file data/part_NNNN.h5 (at least 4 digits)
+    double time = 0;          ///< physical time [s]
+    long long step = 0;       ///< time steps done
+    std::size_t np = 0;       ///< all particles, excluded ones included
+    const double* pos = nullptr;             ///< 3*np, x y z interleaved [m]
+    const float* vel = nullptr;              ///< 3*np [m/s]
+    const float* rhop = nullptr;             ///< np [kg/m^3]
+    const float* press = nullptr;            ///< np [Pa]
+    const std::uint32_t* id = nullptr;       ///< np
+    const std::uint8_t* type = nullptr;      ///< np (ParticleType values)
+    const std::uint16_t* mk = nullptr;       ///< np
+    const std::uint8_t* excluded = nullptr;  ///< np, 0 = active, >0 = excluded (reason code)
 };
 
-/// Writes OUTDIR/data/part_NNNN.h5 (temporary name, then rename); returns "data/part_NNNN.h5".
+/// "data/part_0007.h5" for index 7 (at least 4 digits; "data/part_12345.h5" beyond).
+std::string partFileName(int index);
+
+/// Writes OUTDIR/data/part_NNNN.h5, creating OUTDIR/data if needed. Returns the path
+/// relative to OUTDIR ("data/part_0000.h5"). Throws seaspring::Error naming the file on
+/// any failure (negative index, missing arrays, folder or file not writable); the
+/// temporary file is then removed and an existing part file is left as it was.
 std::string writePartH5(const std::string& outdir, const PartFrame& f);
 
+/// The contents of a part file, as read back by readPartH5.
 struct PartData {
     double time = 0;
     long long step = 0;
-    std::vector<double> pos;
-    std::vector<float> vel, rhop, press;
+    std::vector<double> pos;                  ///< 3*np
+    std::vector<float> vel, rhop, press;      ///< 3*np, np, np
     std::vector<std::uint32_t> id;
     std::vector<std::uint8_t> type, excluded;
     std::vector<std::uint16_t> mk;
+    std::size_t np() const { return id.size(); }
 };
 
+/// Reads a part file (for tests and tools). Checks the format attributes and that every
+/// dataset has the type and shape above; errors name the file and the dataset.
 PartData readPartH5(const std::string& path);
 
 }  // namespace seaspring::io

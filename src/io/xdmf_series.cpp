@@ -1,65 +1,116 @@
 // SeaSpring — MIT licence.
 /// \file xdmf_series.cpp
+/// \brief Writing the XDMF 3 temporal collection parts.xdmf.
 #include "io/xdmf_series.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <string>
 
 #include "core/error.h"
+#include "io/json_writer.h"
 
 namespace seaspring::io {
-
-namespace fs = std::filesystem;
-
-XdmfSeries::XdmfSeries(std::string outdir)
-    : outdir_(std::move(outdir)), path_((fs::path(outdir_) / "parts.xdmf").string()) {}
-
 namespace {
-void attribute(std::ostream& os, const char* name, const char* type, const char* number, int precision,
-               const std::string& file, std::size_t np, int cols) {
-    os << "        <Attribute Name=\"" << name << "\" AttributeType=\"" << type << "\" Center=\"Node\">\n"
-       << "          <DataItem Dimensions=\"" << np;
-    if (cols > 1) os << " " << cols;
-    os << "\" NumberType=\"" << number << "\" Precision=\"" << precision << "\" Format=\"HDF\">" << file << ":/"
-       << name << "</DataItem>\n        </Attribute>\n";
+
+/// One node attribute of the part file and how XDMF is to read it.
+struct AttributeSpec {
+    const char* name;
+    const char* attribute_type;  ///< "Scalar" or "Vector"
+    const char* number_type;     ///< XDMF NumberType: Float, UInt, UChar
+    int precision;               ///< bytes per component
+    int components;              ///< 1 or 3
+};
+
+/// The datasets of part_output.h other than /pos, with their HDF5 element types.
+constexpr AttributeSpec kAttributes[] = {
+    {"vel", "Vector", "Float", 4, 3},   {"rhop", "Scalar", "Float", 4, 1},
+    {"press", "Scalar", "Float", 4, 1}, {"type", "Scalar", "UChar", 1, 1},
+    {"mk", "Scalar", "UInt", 2, 1},     {"id", "Scalar", "UInt", 4, 1},
+    {"excluded", "Scalar", "UChar", 1, 1},
+};
+
+/// `text` with the five XML special characters replaced by entities.
+std::string xmlEscape(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default: out += c;
+        }
+    }
+    return out;
 }
+
+/// `<DataItem ...>FILE:/DATASET</DataItem>` for an [np] or [np x components] dataset.
+std::string dataItem(const std::string& file, const char* dataset, std::size_t np,
+                     int components, const char* number_type, int precision) {
+    std::string dims = std::to_string(np);
+    if (components > 1) dims += " " + std::to_string(components);
+    return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + number_type +
+           "\" Precision=\"" + std::to_string(precision) + "\" Format=\"HDF\">" + file + ":/" +
+           dataset + "</DataItem>";
+}
+
+/// The Uniform grid of one frame, indented for its place in the collection.
+std::string frameXml(const std::string& h5_file, double time, std::size_t np) {
+    const std::string file = xmlEscape(h5_file);
+    char time_text[40];
+    std::snprintf(time_text, sizeof time_text, "%.17g", time);
+    std::string stem = std::filesystem::path(h5_file).stem().string();
+    std::string x;
+    x += "      <Grid Name=\"" + xmlEscape(stem) + "\" GridType=\"Uniform\">\n";
+    x += "        <Time Value=\"" + std::string(time_text) + "\"/>\n";
+    x += "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" +
+         std::to_string(np) + "\" NodesPerElement=\"1\"/>\n";
+    x += "        <Geometry GeometryType=\"XYZ\">\n";
+    x += "          " + dataItem(file, "pos", np, 3, "Float", 8) + "\n";
+    x += "        </Geometry>\n";
+    for (const AttributeSpec& a : kAttributes) {
+        x += "        <Attribute Name=\"" + std::string(a.name) + "\" AttributeType=\"" +
+             a.attribute_type + "\" Center=\"Node\">\n";
+        x += "          " + dataItem(file, a.name, np, a.components, a.number_type, a.precision) +
+             "\n";
+        x += "        </Attribute>\n";
+    }
+    x += "      </Grid>\n";
+    return x;
+}
+
 }  // namespace
 
-void XdmfSeries::add(const std::string& file, double time, std::size_t np) {
-    frames_.push_back({file, time, np});
-    std::ostringstream os;
-    os << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n"
-       << "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    char t[40];
-    for (const Frame& f : frames_) {
-        std::snprintf(t, sizeof t, "%.17g", f.time);
-        os << "      <Grid Name=\"part\" GridType=\"Uniform\">\n        <Time Value=\"" << t << "\" />\n"
-           << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.np
-           << "\" NodesPerElement=\"1\" />\n"
-           << "        <Geometry GeometryType=\"XYZ\">\n          <DataItem Dimensions=\"" << f.np
-           << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << f.file << ":/pos</DataItem>\n"
-           << "        </Geometry>\n";
-        attribute(os, "vel", "Vector", "Float", 4, f.file, f.np, 3);
-        attribute(os, "rhop", "Scalar", "Float", 4, f.file, f.np, 1);
-        attribute(os, "press", "Scalar", "Float", 4, f.file, f.np, 1);
-        attribute(os, "type", "Scalar", "UChar", 1, f.file, f.np, 1);
-        attribute(os, "mk", "Scalar", "UInt", 2, f.file, f.np, 1);
-        attribute(os, "id", "Scalar", "UInt", 4, f.file, f.np, 1);
-        attribute(os, "excluded", "Scalar", "UChar", 1, f.file, f.np, 1);
-        os << "      </Grid>\n";
+XdmfSeries::XdmfSeries(std::string outdir)
+    : outdir_(std::move(outdir)),
+      path_((std::filesystem::path(outdir_) / "parts.xdmf").string()) {}
+
+void XdmfSeries::add(const std::string& h5_relative_path, double time, std::size_t np) {
+    if (h5_relative_path.empty()) throw Error(formatLocation(path_, 0, "empty part file path"));
+    if (!std::isfinite(time))
+        throw Error(formatLocation(path_, 0, "frame " + h5_relative_path + ": time " +
+                                                 std::to_string(time) + " is not finite"));
+    frames_.push_back(frameXml(h5_relative_path, time, np));
+
+    std::string xml;
+    xml += "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n";
+    xml += "<Xdmf Version=\"3.0\">\n";
+    xml += "  <Domain>\n";
+    xml += "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const std::string& frame : frames_) xml += frame;
+    xml += "    </Grid>\n";
+    xml += "  </Domain>\n";
+    xml += "</Xdmf>\n";
+    try {
+        writeTextFileAtomic(path_, xml);
+    } catch (...) {
+        frames_.pop_back();
+        throw;
     }
-    os << "    </Grid>\n  </Domain>\n</Xdmf>\n";
-    const std::string tmp = path_ + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << os.str();
-        if (!out) throw Error(tmp + ": cannot write the XDMF series");
-    }
-    std::error_code ec;
-    fs::rename(tmp, path_, ec);
-    if (ec) throw Error(path_ + ": cannot write: " + ec.message());
 }
 
 }  // namespace seaspring::io

@@ -1,7 +1,15 @@
 // SeaSpring — MIT licence.
 /// \file xdmf_series.h
-/// \brief OUTDIR/parts.xdmf: one XDMF 3 temporal collection over the part_NNNN.h5 files that
-///        ParaView opens directly (Polyvertex points; vel, rhop, press, type, mk, id, excluded).
+/// \brief OUTDIR/parts.xdmf: an XDMF 3 temporal collection over the data/part_NNNN.h5 files,
+///        which ParaView opens directly (File > Open, "XDMF Reader").
+///
+/// The file holds one Domain with one Grid GridType="Collection" CollectionType="Temporal";
+/// each frame is a Uniform grid with its Time, a Polyvertex topology (one vertex per
+/// particle, excluded ones included), XYZ geometry from "FILE:/pos", and node attributes
+/// vel (Vector, Float 4), rhop and press (Scalar, Float 4), type (UChar 1), mk (UInt 2),
+/// id (UInt 4) and excluded (UChar 1) — the element types of the part file (part_output.h).
+/// HDF5 paths are written as given, relative to the folder of parts.xdmf, so that an output
+/// folder can be moved or copied as a whole. Times are printed with "%.17g".
 #pragma once
 
 #include <cstddef>
@@ -12,19 +20,24 @@ namespace seaspring::io {
 
 class XdmfSeries {
 public:
+    /// The series OUTDIR/parts.xdmf; nothing is written until the first add().
     explicit XdmfSeries(std::string outdir);
-    /// Adds a frame and rewrites parts.xdmf (temporary name, then rename) with all frames.
+
+    /// Adds a frame and rewrites parts.xdmf with all frames so far (temporary file, then
+    /// rename, so a reader never sees a half-written file). `h5_relative_path` is the part
+    /// file relative to OUTDIR, as writePartH5 returns it ("data/part_0003.h5"). Throws
+    /// seaspring::Error for an empty path, a non-finite time or a file that cannot be
+    /// written; the frame is then not kept.
     void add(const std::string& h5_relative_path, double time, std::size_t np);
+
+    /// OUTDIR/parts.xdmf.
     const std::string& path() const { return path_; }
+    std::size_t frameCount() const { return frames_.size(); }
 
 private:
-    struct Frame {
-        std::string file;
-        double time;
-        std::size_t np;
-    };
-    std::string outdir_, path_;
-    std::vector<Frame> frames_;
+    std::string outdir_;
+    std::string path_;
+    std::vector<std::string> frames_;  ///< the XML text of each frame's Uniform grid
 };
 
 }  // namespace seaspring::io

@@ -16,6 +16,7 @@
 #include "physics/cell_grid.h"
 #include "physics/eos_tait.h"
 #include "physics/fluid_constants.h"
+#include "physics/particle_updates.h"
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
@@ -27,7 +28,14 @@ struct InteractionInputs {
     const std::uint32_t* cell_start_bound = nullptr;  ///< ncells+1 first indices per cell
     const std::uint32_t* cell_start_fluid = nullptr;  ///< ncells+1 first indices per cell
     const SymTensor* tau = nullptr;                   ///< SPS stress/rho, per particle (SPS only)
+    const Float2* press_ovrho = nullptr;              ///< (Tait pressure, 1/rho) per particle
 };
+
+/// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.
+SEASPRING_HD inline void pressureAt(std::uint32_t i, const ParticleView& v, const FluidConstants& c) {
+    const float rho = v.velrho[i].w;
+    v.press_ovrho[i] = Float2{taitPressure7(rho, c.cteb, c.ovrhop0), 1.f / rho};
+}
 
 /// What a fluid particle's force evaluation produces.
 struct FluidAccum {
@@ -52,46 +60,47 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
     const float visco = kBound ? c.visco_bound : c.visco;
     for (std::uint32_t j = pb; j < pe; ++j) {
         const Float4 psb = in.poscell[j];
-        const float drx = (psa.x - psb.x) + g.cellsizef * float(cax - packedCellX(g, psb.w));
+        const float drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), psa.x - psb.x);
         const float dry = Opt::dim == 3 ? (psa.y - psb.y) + rowdy : 0.f;
         const float drz = (psa.z - psb.z) + rowdz;
-        const float rr2 = drx * drx + dry * dry + drz * drz;
+        const float rr2 = Opt::dim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
         if (!(rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero)) continue;
         const float fac = K::gradFactor(rr2, c.ker);
         const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
         const Float4 vb = in.velrho[j];
-        const float ovrhob = 1.f / vb.w;
+        const Float2 pb2 = in.press_ovrho[j];
+        const float pressb = pb2.x, ovrhob = pb2.y;
         const float ov_r2eta = 1.f / (rr2 + c.eta2);
-        const float pressb = taitPressure7(vb.w, c.cteb, c.ovrhop0);
 
         // Pressure.
         float prs = (pressa + pressb) * (ovrhoa * ovrhob);
         if (K::kType == KernelType::Cubic)
             prs += CubicKernel::tensileCorrection(rr2, pressa, va.w, pressb, vb.w, c.ker);
         const float p_vpm = -prs * massb;
-        acc.ax += p_vpm * frx;
-        acc.ay += p_vpm * fry;
-        acc.az += p_vpm * frz;
+        acc.ax = fma32(p_vpm, frx, acc.ax);
+        acc.ay = fma32(p_vpm, fry, acc.ay);
+        acc.az = fma32(p_vpm, frz, acc.az);
 
         // Continuity.
         const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-        acc.ar += massb * (dvx * frx + dvy * fry + dvz * frz) * (va.w * ovrhob);
+        const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
+        acc.ar = fma32(massb * dot_vf, va.w * ovrhob, acc.ar);
 
         // Viscous time-step measure and viscosity.
-        const float dot_vr = drx * dvx + dry * dvy + drz * dvz;
+        const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+        const float dot3 = fma32(drx, frx, fma32(dry, fry, drz * frz));  // r . grad W
         acc.visc = maxf(acc.visc, viscDtPair(dot_vr, ov_r2eta));
         if (Opt::visco == Viscosity::Artificial) {
             const float s = artificialViscosityFactor(dot_vr, ov_r2eta, va.w, vb.w, massb, visco,
                                                       c.cs0, c.ker.h);
-            acc.ax -= s * frx;
-            acc.ay -= s * fry;
-            acc.az -= s * frz;
+            acc.ax = fma32(-s, frx, acc.ax);
+            acc.ay = fma32(-s, fry, acc.ay);
+            acc.az = fma32(-s, frz, acc.az);
         } else {
-            const float dot_rw = drx * frx + dry * fry + drz * frz;
-            const float s = laminarViscosityFactor(dot_rw, ov_r2eta, va.w, vb.w, massb, visco);
-            acc.ax += s * dvx;
-            acc.ay += s * dvy;
-            acc.az += s * dvz;
+            const float s = laminarViscosityFactor(dot3, ov_r2eta, va.w, vb.w, massb, visco);
+            acc.ax = fma32(s, dvx, acc.ax);
+            acc.ay = fma32(s, dvy, acc.ay);
+            acc.az = fma32(s, dvz, acc.az);
             if (Opt::sps) {
                 SymTensor t = taua;
                 if (!kBound) {
@@ -112,15 +121,12 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
             if (kBound) {
                 acc.ddt_off = true;
             } else if (Opt::ddt == DensityDiffusion::Molteni) {
-                const float dot3 = drx * frx + dry * fry + drz * frz;
                 acc.delta += ddtMolteniPair(va.w, ovrhob, ov_r2eta, dot3, massb, c.ddtkh, c.cs0);
             } else {
-                const float dot3 = drx * frx + dry * fry + drz * frz;
                 acc.delta += ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh,
                                               c.cs0, c.ddtgz, c.rhop0);
             }
         } else if (Opt::ddt == DensityDiffusion::FourtakasFull && !kBound) {
-            const float dot3 = drx * frx + dry * fry + drz * frz;
             acc.delta += ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh,
                                           c.cs0, c.ddtgz, c.rhop0);
         }
@@ -160,8 +166,8 @@ SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const Intera
                                                    const FluidConstants& c, const CellGrid& g) {
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
-    const float pressa = taitPressure7(va.w, c.cteb, c.ovrhop0);
-    const float ovrhoa = 1.f / va.w;
+    const Float2 pa2 = in.press_ovrho[i];
+    const float pressa = pa2.x, ovrhoa = pa2.y;
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
     FluidAccum acc;
@@ -198,17 +204,19 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
             const std::uint32_t pe = in.cell_start_fluid[row + std::uint32_t(x1) + 1u];
             for (std::uint32_t j = pb; j < pe; ++j) {
                 const Float4 psb = in.poscell[j];
-                const float drx = (psa.x - psb.x) + g.cellsizef * float(cax - packedCellX(g, psb.w));
+                const float drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), psa.x - psb.x);
                 const float dry = Opt::dim == 3 ? (psa.y - psb.y) + rowdy : 0.f;
                 const float drz = (psa.z - psb.z) + rowdz;
-                const float rr2 = drx * drx + dry * dry + drz * drz;
+                const float rr2 = Opt::dim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz))
+                                                : fma32(drx, drx, drz * drz);
                 if (!(rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero)) continue;
                 const float fac = K::gradFactor(rr2, c.ker);
                 const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
                 const Float4 vb = in.velrho[j];
                 const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-                ar += c.massfluid * (dvx * frx + dvy * fry + dvz * frz) * (va.w / vb.w);
-                const float dot_vr = drx * dvx + dry * dvy + drz * dvz;
+                const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
+                ar = fma32(c.massfluid * dot_vf, va.w * in.press_ovrho[j].y, ar);
+                const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
                 visc = maxf(visc, viscDtPair(dot_vr, 1.f / (rr2 + c.eta2)));
             }
         }

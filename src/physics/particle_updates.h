@@ -23,6 +23,7 @@ struct ParticleView {
     Float4* velrho = nullptr;
     std::uint8_t* excl = nullptr;       ///< ExclusionReason
     Float4* poscell = nullptr;
+    Float2* press_ovrho = nullptr;      ///< force evaluation: (pressure, 1/rho)
     Double3* pos_pre = nullptr;         ///< symplectic: position at the start of the step
     Float4* velrho_pre = nullptr;       ///< symplectic: state at step start; Verlet: state at n-1
     Float4* acear = nullptr;            ///< force evaluation: (ax, ay, az, ar)

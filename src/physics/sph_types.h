@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cmath>
 #include <cstring>
 
 #include "core/host_device.h"
@@ -14,6 +15,11 @@ namespace seaspring::physics {
 /// Four floats in one 16-byte word: (x, y, z, w).
 struct alignas(16) Float4 {
     float x, y, z, w;
+};
+
+/// Two floats in one 8-byte word.
+struct alignas(8) Float2 {
+    float x, y;
 };
 
 /// A double-precision position.
@@ -50,6 +56,11 @@ SEASPRING_HD inline std::uint32_t floatBitsToUint(float f) {
 
 /// max(a, b) that ignores a NaN in b (a is never NaN where used: it starts at 0).
 SEASPRING_HD inline float maxf(float a, float b) { return b > a ? b : a; }
+/// a*b + c with a single rounding (IEEE fused multiply-add): the same bits on the CPU (hardware
+/// FMA, or glibc's exact fmaf) and the GPU. Used where we want a fused operation, explicitly,
+/// since contraction is otherwise off on both sides.
+SEASPRING_HD inline float fma32(float a, float b, float c) { return fmaf(a, b, c); }
+
 SEASPRING_HD inline int maxi(int a, int b) { return a > b ? a : b; }
 SEASPRING_HD inline int mini(int a, int b) { return a < b ? a : b; }
 

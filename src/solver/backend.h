@@ -69,6 +69,8 @@ public:
     virtual void verletStep(double dt, bool euler) = 0;
     /// Active fluid particles now.
     virtual std::uint32_t activeFluid() const = 0;
+    /// Waits for queued device work (phase timers only; the CPU backend has none).
+    virtual void synchronize() {}
     virtual void download(HostState& out) = 0;
 };
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -205,6 +206,7 @@ double Simulation::limitDt(double dt) {
 void Simulation::output(double time, long long step) {
     HostState st;
     backend_->download(st);
+    if (observer_) observer_(time, step, st);
     const std::size_t np = st.pos.size();
     std::vector<double> pos(3 * np);
     std::vector<float> vel(3 * np), rhop(np), press(np);
@@ -268,6 +270,22 @@ RunSummary Simulation::run() {
     backend_->divide();
     output(0.0, 0);
 
+    // SEASPRING_TIMERS=1: wall time per phase (synchronising the device after each phase).
+    const bool timers = std::getenv("SEASPRING_TIMERS") != nullptr;
+    double t_divide = 0, t_forces = 0, t_integrate = 0, t_other = 0;
+    auto phase = [&](double& acc, auto&& fn) {
+        if (!timers) return fn();
+        const auto a = Clock::now();
+        auto r = fn();
+        backend_->synchronize();
+        acc += seconds(a, Clock::now());
+        return r;
+    };
+    auto forces = [&] { return phase(t_forces, [&] { return backend_->computeForces(); }); };
+    auto predictor = [&](double dt) { phase(t_integrate, [&] { backend_->symplecticPredictor(dt); return 0; }); };
+    auto corrector = [&](double dt) { phase(t_integrate, [&] { backend_->symplecticCorrector(dt); return 0; }); };
+    auto verlet = [&](double dt, bool e) { phase(t_integrate, [&] { backend_->verletStep(dt, e); return 0; }); };
+    auto divide = [&] { phase(t_divide, [&] { backend_->divide(); return 0; }); };
     double t = 0, dt_next = p.dt_ini > 0 ? p.dt_ini : h / cs0, dt_prev = dt_next;
     double next_out = tout;
     long long step = 0;
@@ -284,25 +302,28 @@ RunSummary Simulation::run() {
         double dt;
         if (symplectic) {
             dt = p.dt_fixed > 0 ? p.dt_fixed : dt_next;
-            const double dtp = limitDt(physics::variableDt(backend_->computeForces(), h, cs0, cfl));
-            backend_->symplecticPredictor(dt);
-            backend_->divide();
-            const double dtc = limitDt(physics::variableDt(backend_->computeForces(), h, cs0, cfl));
-            backend_->symplecticCorrector(dt);
+            const double dtp = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+            predictor(dt);
+            divide();
+            const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+            corrector(dt);
             dt_next = std::min(dtp, dtc);
         } else {
-            const double dtv = limitDt(physics::variableDt(backend_->computeForces(), h, cs0, cfl));
+            const double dtv = limitDt(physics::variableDt(forces(), h, cs0, cfl));
             dt = p.dt_fixed > 0 ? p.dt_fixed : dtv;
             const bool euler = ++verlet_count >= p.verlet_steps;
             if (euler) verlet_count = 0;
-            backend_->verletStep(dt, euler);
+            verlet(dt, euler);
             dt_prev = dt;
         }
         t += dt;
         ++step;
         // Moving boundaries: pose at t, velocity over the coming step (its dt when known).
-        placeMoving(t, symplectic ? (p.dt_fixed > 0 ? p.dt_fixed : dt_next) : dt_prev);
-        backend_->divide();
+        phase(t_other, [&] {
+            placeMoving(t, symplectic ? (p.dt_fixed > 0 ? p.dt_fixed : dt_next) : dt_prev);
+            return 0;
+        });
+        divide();
         sum_.dt_last = dt;
         const std::uint32_t active = backend_->activeFluid();
         if (!warned_out && case_.nfluid > 0 &&
@@ -335,6 +356,13 @@ RunSummary Simulation::run() {
         }
     }
     const auto t_end_loop = Clock::now();
+    if (timers && step > 0) {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "phase times per step [ms]: divide %.3f  forces %.3f  integrate %.3f  motion %.3f\n",
+                      1e3 * t_divide / step, 1e3 * t_forces / step, 1e3 * t_integrate / step, 1e3 * t_other / step);
+        log_ << line;
+    }
     if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
     backend_->download(final_);
     sum_.state_hash = hashHex(stateHash(final_));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -44,6 +45,10 @@ public:
     RunSummary run();
     /// The state at the end of run() (id order).
     const HostState& finalState() const { return final_; }
+    /// Called at every output time (t = 0, each TimeOut, the end) with the state in id order,
+    /// whatever -sv says: for in-process post-processing (tests, gauges).
+    using OutputObserver = std::function<void(double time, long long step, const HostState& state)>;
+    void onOutput(OutputObserver f) { observer_ = std::move(f); }
 
 private:
     void output(double time, long long step);
@@ -60,6 +65,7 @@ private:
     int out_index_ = 0;
     struct Output;
     std::shared_ptr<Output> out_;
+    OutputObserver observer_;
 };
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").

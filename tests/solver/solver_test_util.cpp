@@ -40,7 +40,8 @@ std::string generateCase(const std::string& dir, const std::string& name, const 
 }
 
 SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,
-                 const std::function<void(solver::RunOptions&)>& tweak) {
+                 const std::function<void(solver::RunOptions&)>& tweak,
+                 const solver::Simulation::OutputObserver& observe) {
     SolverRun r;
     r.kase = solver::loadSolverCase(case_path);
     solver::RunOptions o;
@@ -56,6 +57,7 @@ SolverRun runCpu(const std::string& case_path, const std::string& outdir, int th
     if (o.tout) r.kase.params.time_out = *o.tout;
     std::ostringstream log;
     solver::Simulation sim(r.kase, o, solver::makeCpuBackend(threads), log);
+    if (observe) sim.onOutput(observe);
     r.summary = sim.run();
     r.state = sim.finalState();
     return r;

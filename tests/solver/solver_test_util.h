@@ -27,7 +27,9 @@ struct SolverRun {
 };
 
 /// Runs the case on the CPU backend; `tweak` edits options (tmax, nsteps, overrides...).
+/// `observe` (optional) sees the state at every output time (TimeOut; saving is off).
 SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,
-                 const std::function<void(solver::RunOptions&)>& tweak = {});
+                 const std::function<void(solver::RunOptions&)>& tweak = {},
+                 const solver::Simulation::OutputObserver& observe = {});
 
 }  // namespace seaspring::test
