@@ -33,13 +33,13 @@ physics::DtMaxima cpuForcesFor(CpuArrays& a, std::uint32_t nbound, std::uint32_t
 #pragma omp for schedule(dynamic, 512) nowait
         for (std::int64_t i = 0; i < nb; ++i) {
             float ar, visc;
-            boundParticleForces<Opt>(std::uint32_t(i), in, c, g, ar, visc);
+            boundParticleForces<Opt, true>(std::uint32_t(i), in, c, g, ar, visc);
             a.acear[i] = Float4{0.f, 0.f, 0.f, ar};
             a.visc[i] = visc;
         }
 #pragma omp for schedule(dynamic, 256)
         for (std::int64_t i = nb; i < np; ++i) {
-            const FluidAccum acc = fluidParticleForces<Opt>(std::uint32_t(i), in, c, g);
+            const FluidAccum acc = fluidParticleForces<Opt, true>(std::uint32_t(i), in, c, g);
             a.acear[i] = Float4{acc.ax, acc.ay, acc.az, acc.ar};
             a.visc[i] = acc.visc;
             if (Opt::sps) a.gradvel[i] = acc.gradvel;

@@ -22,6 +22,7 @@ struct CellGrid {
     double minx = 0, miny = 0, minz = 0;  ///< domain minimum [m]
     double cellsize = 0;                   ///< [m]
     float cellsizef = 0;                   ///< float(cellsize)
+    float ovcellsizef = 0;                 ///< 1 / cellsizef
     int ncx = 1, ncy = 1, ncz = 1;         ///< cells per axis
     int range = 1;                         ///< cells searched on each side (= cell_div)
     std::uint32_t bitsx = 1, bitsy = 1;    ///< packed cell: cx | cy << bitsx | cz << (bitsx+bitsy)
@@ -70,6 +71,34 @@ SEASPRING_HD inline int packedCellZ(const CellGrid& g, float w) {
     return int(floatBitsToUint(w) >> (g.bitsx + g.bitsy));
 }
 
+/// Distance along one axis from a point at offset `o` in its cell ([0, cellsize]) to the
+/// nearest face of the cell `k` cells away (0 for k = 0), less `margin`, floored at 0.
+SEASPRING_HD inline float cellGap(int k, float o, float cs, float margin) {
+    const float d = k > 0 ? float(k) * cs - o : (k < 0 ? o - float(k + 1) * cs : 0.f);
+    const float dm = d - margin;
+    return dm > 0.f ? dm : 0.f;
+}
+
+/// The x cells [x0, x1] of one row of cells that can hold particles within sqrt(r2) of a point
+/// at offset `ox` in cell `cax`, `gyz2` being the squared gap from the point to the row in y
+/// and z (cellGap). False when no cell of the row is in reach. With margin > 0 the span is
+/// conservative: every pair that passes the exact pair test (float r^2 <= r2) lies inside it,
+/// so skipping the rest changes no result; it only spares the candidates out of reach
+/// (rows at the corners of the search box and cells beyond the sphere along x).
+SEASPRING_HD inline bool rowSpan(const CellGrid& g, int cax, float ox, float gyz2, float r2, float margin,
+                                 int& x0, int& x1) {
+    const float rem = r2 - gyz2;
+    if (rem < 0.f) return false;
+    const float dx = sqrtf(rem) + margin;
+    const int k0 = int(floorf((ox - dx) * g.ovcellsizef));
+    const int k1 = int(floorf((ox + dx) * g.ovcellsizef));
+    x0 = cax + (k0 > -g.range ? k0 : -g.range);
+    x1 = cax + (k1 < g.range ? k1 : g.range);
+    if (x0 < 0) x0 = 0;
+    if (x1 > g.ncx - 1) x1 = g.ncx - 1;
+    return x0 <= x1;
+}
+
 /// Sort key: cell then particle id for active particles; excluded particles after all cells
 /// (still ordered by id). Keys are unique, so any correct sort gives the same order.
 constexpr std::uint64_t kExcludedCell = 0xFFFFFFFFull;
@@ -87,6 +116,7 @@ inline bool makeCellGrid(double minx, double miny, double minz, double maxx, dou
     g.minz = minz;
     g.cellsize = 2.0 * h / double(cell_div);
     g.cellsizef = float(g.cellsize);
+    g.ovcellsizef = 1.f / g.cellsizef;
     g.range = cell_div;
     auto count = [&](double lo, double hi) { return int(std::floor((hi - lo) / g.cellsize)) + 1; };
     g.ncx = count(minx, maxx);

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "physics/cell_grid.h"
 #include "physics/eos_tait.h"
@@ -20,6 +21,9 @@
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
+
+/// Safety margin of the row spans, in cells: absorbs the rounding of the span arithmetic.
+constexpr float kRowSpanMargin = 1e-3f;
 
 /// Read-only inputs of the interaction (sorted order).
 struct InteractionInputs {
@@ -47,121 +51,244 @@ struct FluidAccum {
     SymTensor gradvel{0, 0, 0, 0, 0, 0};  ///< SPS velocity gradient sums
 };
 
-/// Pairs of fluid particle `pa` with neighbours [pb, pe) of one row. `kBound`: the range is
-/// in the boundary block. rowdy/rowdz = cellsize * (cell difference in y / z) of the row.
+/// Offset r_ab = r_a - r_b of a candidate b in the row (rowdy, rowdz) and its squared length.
+template <int kDim>
+SEASPRING_HD inline float pairOffset(const Float4& psa, const Float4& psb, int cax, float rowdy, float rowdz,
+                                     const CellGrid& g, float& drx, float& dry, float& drz) {
+    drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), psa.x - psb.x);
+    dry = kDim == 3 ? (psa.y - psb.y) + rowdy : 0.f;
+    drz = (psa.z - psb.z) + rowdz;
+    return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
+}
+
+/// The exact neighbour test of a pair (inside the kernel support, not the particle itself).
+SEASPRING_HD inline bool isNeighbour(float rr2, const FluidConstants& c) {
+    return rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero;
+}
+
+/// What pair (a, b) adds to fluid particle a, before it is summed (addPairTerms).
+struct PairTerms {
+    float frx, fry, frz;   ///< grad W_ab
+    float cf;              ///< coefficient of grad W_ab in dv_a/dt (pressure, artificial viscosity)
+    float cv;              ///< coefficient of v_ab in dv_a/dt (laminar viscosity)
+    float dvx, dvy, dvz;   ///< v_ab (laminar)
+    float sx, sy, sz;      ///< SPS stress term of dv_a/dt
+    float ar;              ///< continuity term of d(rho_a)/dt
+    float delta;           ///< density diffusion term
+    float visc;            ///< viscous dt measure v_ab.r_ab / (r^2 + eta2)
+    SymTensor gv;          ///< SPS velocity-gradient terms
+};
+
+/// The terms of pair (a, b): b = j at offset (drx, dry, drz) from a, rr2 = r^2, inside the
+/// support. `kBound`: b is a boundary particle. No branches on data (selects only), so the
+/// host can evaluate a batch of pairs in SIMD lanes with the same bits as one by one.
 template <class Opt, bool kBound>
-SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, const Float4& psa,
-                                         int cax, float rowdy, float rowdz, const Float4& va,
-                                         float ovrhoa, float pressa, const SymTensor& taua,
-                                         const InteractionInputs& in, const FluidConstants& c,
-                                         const CellGrid& g, FluidAccum& acc) {
+SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float dry, float drz, float rr2,
+                                             const Float4& va, float ovrhoa, float pressa,
+                                             const SymTensor& taua, const InteractionInputs& in,
+                                             const FluidConstants& c) {
     using K = typename Opt::Kernel;
     const float massb = kBound ? c.massbound : c.massfluid;
     const float visco = kBound ? c.visco_bound : c.visco;
+    PairTerms t;
+    const float fac = K::gradFactor(rr2, c.ker);
+    t.frx = fac * drx;
+    t.fry = fac * dry;
+    t.frz = fac * drz;
+    const Float4 vb = in.velrho[j];
+    const Float2 pb2 = in.press_ovrho[j];
+    const float pressb = pb2.x, ovrhob = pb2.y;
+    const float ov_r2eta = 1.f / (rr2 + c.eta2);
+
+    // Pressure.
+    float prs = (pressa + pressb) * (ovrhoa * ovrhob);
+    if (K::kType == KernelType::Cubic)
+        prs += CubicKernel::tensileCorrection(rr2, pressa, va.w, pressb, vb.w, c.ker);
+    t.cf = -prs * massb;
+
+    // Continuity.
+    const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
+    const float dot_vf = fma32(dvx, t.frx, fma32(dvy, t.fry, dvz * t.frz));
+    t.ar = (massb * dot_vf) * (va.w * ovrhob);
+
+    // Viscous time-step measure and viscosity.
+    const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+    const float dot3 = fma32(drx, t.frx, fma32(dry, t.fry, drz * t.frz));  // r . grad W
+    t.visc = viscDtPair(dot_vr, ov_r2eta);
+    if (Opt::visco == Viscosity::Artificial) {
+        t.cf -= artificialViscosityFactor(dot_vr, ov_r2eta, va.w, vb.w, massb, visco, c.cs0, c.ker.h);
+    } else {
+        t.cv = laminarViscosityFactor(dot3, ov_r2eta, va.w, vb.w, massb, visco);
+        t.dvx = dvx;
+        t.dvy = dvy;
+        t.dvz = dvz;
+        if (Opt::sps) {
+            SymTensor ts = taua;
+            if (!kBound) {
+                const SymTensor tb = in.tau[j];
+                ts.xx += tb.xx; ts.xy += tb.xy; ts.xz += tb.xz;
+                ts.yy += tb.yy; ts.yz += tb.yz; ts.zz += tb.zz;
+            }
+            t.sx = massb * (ts.xx * t.frx + ts.xy * t.fry + ts.xz * t.frz);
+            t.sy = massb * (ts.xy * t.frx + ts.yy * t.fry + ts.yz * t.frz);
+            t.sz = massb * (ts.xz * t.frx + ts.yz * t.fry + ts.zz * t.frz);
+            t.gv = SymTensor{0, 0, 0, 0, 0, 0};
+            if (!kBound) accumulateVelocityGradient(t.gv, dvx, dvy, dvz, t.frx, t.fry, t.frz, massb, ovrhob);
+        }
+    }
+
+    // Density diffusion (DensityDT 1 and 2 are switched off by any boundary neighbour:
+    // addPairTerms).
+    t.delta = 0.f;
+    if (!kBound && Opt::ddt == DensityDiffusion::Molteni)
+        t.delta = ddtMolteniPair(va.w, ovrhob, ov_r2eta, dot3, massb, c.ddtkh, c.cs0);
+    if (!kBound && (Opt::ddt == DensityDiffusion::Fourtakas || Opt::ddt == DensityDiffusion::FourtakasFull))
+        t.delta = ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh, c.cs0, c.ddtgz,
+                                   c.rhop0);
+    return t;
+}
+
+/// Adds one pair's terms to particle a's sums (in neighbour order on every backend).
+template <class Opt, bool kBound>
+SEASPRING_HD inline void addPairTerms(FluidAccum& acc, const PairTerms& t) {
+    acc.ax = fma32(t.cf, t.frx, acc.ax);
+    acc.ay = fma32(t.cf, t.fry, acc.ay);
+    acc.az = fma32(t.cf, t.frz, acc.az);
+    if (Opt::visco != Viscosity::Artificial) {
+        acc.ax = fma32(t.cv, t.dvx, acc.ax);
+        acc.ay = fma32(t.cv, t.dvy, acc.ay);
+        acc.az = fma32(t.cv, t.dvz, acc.az);
+        if (Opt::sps) {
+            acc.ax += t.sx;
+            acc.ay += t.sy;
+            acc.az += t.sz;
+            if (!kBound) {
+                acc.gradvel.xx += t.gv.xx; acc.gradvel.xy += t.gv.xy; acc.gradvel.xz += t.gv.xz;
+                acc.gradvel.yy += t.gv.yy; acc.gradvel.yz += t.gv.yz; acc.gradvel.zz += t.gv.zz;
+            }
+        }
+    }
+    acc.ar += t.ar;
+    acc.visc = maxf(acc.visc, t.visc);
+    if (!kBound) acc.delta += t.delta;
+    if (kBound && (Opt::ddt == DensityDiffusion::Molteni || Opt::ddt == DensityDiffusion::Fourtakas))
+        acc.ddt_off = true;
+}
+
+/// One pair, terms and sum (the GPU's path).
+template <class Opt, bool kBound>
+SEASPRING_HD inline void fluidPair(std::uint32_t j, float drx, float dry, float drz, float rr2,
+                                   const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+                                   const InteractionInputs& in, const FluidConstants& c, FluidAccum& acc) {
+    addPairTerms<Opt, kBound>(acc, fluidPairTerms<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c));
+}
+
+/// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound): the
+/// direct loop (the GPU's path).
+template <class Opt, bool kBound>
+SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, const Float4& psa, int cax,
+                                         float rowdy, float rowdz, const Float4& va, float ovrhoa,
+                                         float pressa, const SymTensor& taua, const InteractionInputs& in,
+                                         const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
     for (std::uint32_t j = pb; j < pe; ++j) {
-        const Float4 psb = in.poscell[j];
-        const float drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), psa.x - psb.x);
-        const float dry = Opt::dim == 3 ? (psa.y - psb.y) + rowdy : 0.f;
-        const float drz = (psa.z - psb.z) + rowdz;
-        const float rr2 = Opt::dim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
-        if (!(rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero)) continue;
-        const float fac = K::gradFactor(rr2, c.ker);
-        const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
-        const Float4 vb = in.velrho[j];
-        const Float2 pb2 = in.press_ovrho[j];
-        const float pressb = pb2.x, ovrhob = pb2.y;
-        const float ov_r2eta = 1.f / (rr2 + c.eta2);
-
-        // Pressure.
-        float prs = (pressa + pressb) * (ovrhoa * ovrhob);
-        if (K::kType == KernelType::Cubic)
-            prs += CubicKernel::tensileCorrection(rr2, pressa, va.w, pressb, vb.w, c.ker);
-        const float p_vpm = -prs * massb;
-        acc.ax = fma32(p_vpm, frx, acc.ax);
-        acc.ay = fma32(p_vpm, fry, acc.ay);
-        acc.az = fma32(p_vpm, frz, acc.az);
-
-        // Continuity.
-        const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-        const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
-        acc.ar = fma32(massb * dot_vf, va.w * ovrhob, acc.ar);
-
-        // Viscous time-step measure and viscosity.
-        const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
-        const float dot3 = fma32(drx, frx, fma32(dry, fry, drz * frz));  // r . grad W
-        acc.visc = maxf(acc.visc, viscDtPair(dot_vr, ov_r2eta));
-        if (Opt::visco == Viscosity::Artificial) {
-            const float s = artificialViscosityFactor(dot_vr, ov_r2eta, va.w, vb.w, massb, visco,
-                                                      c.cs0, c.ker.h);
-            acc.ax = fma32(-s, frx, acc.ax);
-            acc.ay = fma32(-s, fry, acc.ay);
-            acc.az = fma32(-s, frz, acc.az);
-        } else {
-            const float s = laminarViscosityFactor(dot3, ov_r2eta, va.w, vb.w, massb, visco);
-            acc.ax = fma32(s, dvx, acc.ax);
-            acc.ay = fma32(s, dvy, acc.ay);
-            acc.az = fma32(s, dvz, acc.az);
-            if (Opt::sps) {
-                SymTensor t = taua;
-                if (!kBound) {
-                    const SymTensor tb = in.tau[j];
-                    t.xx += tb.xx; t.xy += tb.xy; t.xz += tb.xz;
-                    t.yy += tb.yy; t.yz += tb.yz; t.zz += tb.zz;
-                }
-                acc.ax += massb * (t.xx * frx + t.xy * fry + t.xz * frz);
-                acc.ay += massb * (t.xy * frx + t.yy * fry + t.yz * frz);
-                acc.az += massb * (t.xz * frx + t.yz * fry + t.zz * frz);
-                if (!kBound)
-                    accumulateVelocityGradient(acc.gradvel, dvx, dvy, dvz, frx, fry, frz, massb, ovrhob);
-            }
-        }
-
-        // Density diffusion.
-        if (Opt::ddt == DensityDiffusion::Molteni || Opt::ddt == DensityDiffusion::Fourtakas) {
-            if (kBound) {
-                acc.ddt_off = true;
-            } else if (Opt::ddt == DensityDiffusion::Molteni) {
-                acc.delta += ddtMolteniPair(va.w, ovrhob, ov_r2eta, dot3, massb, c.ddtkh, c.cs0);
-            } else {
-                acc.delta += ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh,
-                                              c.cs0, c.ddtgz, c.rhop0);
-            }
-        } else if (Opt::ddt == DensityDiffusion::FourtakasFull && !kBound) {
-            acc.delta += ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh,
-                                          c.cs0, c.ddtgz, c.rhop0);
-        }
+        float drx, dry, drz;
+        const float rr2 = pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, drx, dry, drz);
+        if (!isNeighbour(rr2, c)) continue;
+        fluidPair<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
     }
 }
 
-/// Visits the rows around `psa`'s cell in one block (cell_start of that block).
+/// The host's path (kCompact): the candidates of one block, gathered row by row, are processed
+/// in batches. Offsets are computed in SIMD lanes, neighbours selected without branches, their
+/// terms computed in SIMD lanes, and the terms summed one by one in candidate order: the same
+/// operations in the same order as the direct loop, so the same bits, at a fraction of the
+/// cost of a mispredicted branch per candidate and scalar pair arithmetic.
 template <class Opt, bool kBound>
+struct PairBatch {
+    static constexpr int kCap = 256;
+    std::uint32_t jj[kCap];
+    float bx[kCap], by[kCap], bz[kCap], br[kCap];
+    PairTerms t[kCap];
+    int m = 0;
+
+    SEASPRING_HD void flush(const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+                            const InteractionInputs& in, const FluidConstants& c, FluidAccum& acc) {
+        int n = 0;
+        for (int k = 0; k < m; ++k) {  // in place: n <= k
+            jj[n] = jj[k];
+            bx[n] = bx[k];
+            by[n] = by[k];
+            bz[n] = bz[k];
+            const float r = br[k];
+            br[n] = r;
+            n += isNeighbour(r, c) ? 1 : 0;
+        }
+        const std::uint32_t* __restrict sj = jj;
+        const float *__restrict sx = bx, *__restrict sy = by, *__restrict sz = bz, *__restrict sr = br;
+        for (int q = 0; q < n; ++q)  // SIMD lanes
+            t[q] = fluidPairTerms<Opt, kBound>(sj[q], sx[q], sy[q], sz[q], sr[q], va, ovrhoa, pressa, taua, in, c);
+        for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc, t[q]);
+        m = 0;
+    }
+
+    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, const Float4& psa, int cax, float rowdy,
+                             float rowdz, const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+                             const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
+                             FluidAccum& acc) {
+        while (pb < pe) {
+            const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
+            for (int k = 0; k < take; ++k) {
+                const std::uint32_t j = pb + std::uint32_t(k);
+                jj[m + k] = j;
+                br[m + k] = pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, bx[m + k], by[m + k],
+                                                 bz[m + k]);
+            }
+            m += take;
+            pb += std::uint32_t(take);
+            if (m == kCap) flush(va, ovrhoa, pressa, taua, in, c, acc);
+        }
+    }
+};
+
+/// Visits the rows of cells around `psa`'s cell that can hold a neighbour (by z then y,
+/// ascending) in one block (`cell_start` of that block).
+template <class Opt, bool kBound, bool kCompact>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
-                                           const SymTensor& taua,
-                                           const InteractionInputs& in, const FluidConstants& c,
-                                           const CellGrid& g, FluidAccum& acc) {
+                                           const SymTensor& taua, const InteractionInputs& in,
+                                           const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
     const int cax = packedCellX(g, psa.w);
     const int cay = Opt::dim == 3 ? packedCellY(g, psa.w) : 0;
     const int caz = packedCellZ(g, psa.w);
-    const int x0 = maxi(cax - g.range, 0), x1 = mini(cax + g.range, g.ncx - 1);
     const int y0 = Opt::dim == 3 ? maxi(cay - g.range, 0) : 0;
     const int y1 = Opt::dim == 3 ? mini(cay + g.range, g.ncy - 1) : 0;
     const int z0 = maxi(caz - g.range, 0), z1 = mini(caz + g.range, g.ncz - 1);
+    const float margin = kRowSpanMargin * g.cellsizef;
+    struct Empty {};
+    std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
     for (int z = z0; z <= z1; ++z) {
         const float rowdz = g.cellsizef * float(caz - z);
+        const float gz = cellGap(z - caz, psa.z, g.cellsizef, margin);
         for (int y = y0; y <= y1; ++y) {
             const float rowdy = g.cellsizef * float(cay - y);
+            const float gy = Opt::dim == 3 ? cellGap(y - cay, psa.y, g.cellsizef, margin) : 0.f;
+            int x0, x1;
+            if (!rowSpan(g, cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, margin, x0, x1)) continue;
             const std::uint32_t row = g.linear(0, y, z);
             const std::uint32_t pb = cell_start[row + std::uint32_t(x0)];
             const std::uint32_t pe = cell_start[row + std::uint32_t(x1) + 1u];
-            fluidPairsInRow<Opt, kBound>(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua,
-                                         in, c, g, acc);
+            if constexpr (kCompact)
+                batch.addRow(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua, in, c, g, acc);
+            else
+                fluidPairsInRow<Opt, kBound>(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua, in, c, g, acc);
         }
     }
+    if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
 }
 
-/// Force evaluation of fluid particle `i`.
-template <class Opt>
+/// Force evaluation of fluid particle `i`: fluid neighbours, then boundary neighbours.
+/// kCompact: see PairBatch (the host sets it; same results).
+template <class Opt, bool kCompact = false>
 SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const InteractionInputs& in,
                                                    const FluidConstants& c, const CellGrid& g) {
     const Float4 psa = in.poscell[i];
@@ -171,53 +298,86 @@ SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const Intera
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
     FluidAccum acc;
-    fluidPairsInBlock<Opt, false>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
-    fluidPairsInBlock<Opt, true>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
+    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
+    fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
     if (Opt::ddt != DensityDiffusion::None && !acc.ddt_off) acc.ar += acc.delta;
     return acc;
 }
 
+/// Candidates the host filters at once in boundParticleForces (kCompact).
+constexpr int kCandidateChunk = 64;
+
+/// What fluid neighbour j adds to DBC boundary particle a: continuity (ar) and the viscous dt
+/// measure (visc).
+template <class Opt>
+SEASPRING_HD inline void boundPair(std::uint32_t j, float drx, float dry, float drz, float rr2, const Float4& va,
+                                   const InteractionInputs& in, const FluidConstants& c, float& ar,
+                                   float& visc) {
+    using K = typename Opt::Kernel;
+    const float fac = K::gradFactor(rr2, c.ker);
+    const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
+    const Float4 vb = in.velrho[j];
+    const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
+    const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
+    ar = fma32(c.massfluid * dot_vf, va.w * in.press_ovrho[j].y, ar);
+    const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+    visc = maxf(visc, viscDtPair(dot_vr, 1.f / (rr2 + c.eta2)));
+}
+
 /// Force evaluation of DBC boundary particle `i`: continuity with fluid neighbours and the
 /// viscous dt measure (boundary particles feel no force: their motion is prescribed).
-/// Returns (ar, visc).
-template <class Opt>
+/// The row walk is fluidPairsInBlock's; kCompact: branch-free selection (as PairBatch).
+template <class Opt, bool kCompact = false>
 SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionInputs& in,
                                              const FluidConstants& c, const CellGrid& g,
                                              float& ar_out, float& visc_out) {
-    using K = typename Opt::Kernel;
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
     const int cax = packedCellX(g, psa.w);
     const int cay = Opt::dim == 3 ? packedCellY(g, psa.w) : 0;
     const int caz = packedCellZ(g, psa.w);
-    const int x0 = maxi(cax - g.range, 0), x1 = mini(cax + g.range, g.ncx - 1);
     const int y0 = Opt::dim == 3 ? maxi(cay - g.range, 0) : 0;
     const int y1 = Opt::dim == 3 ? mini(cay + g.range, g.ncy - 1) : 0;
     const int z0 = maxi(caz - g.range, 0), z1 = mini(caz + g.range, g.ncz - 1);
+    const float margin = kRowSpanMargin * g.cellsizef;
     float ar = 0.f, visc = 0.f;
     for (int z = z0; z <= z1; ++z) {
         const float rowdz = g.cellsizef * float(caz - z);
+        const float gz = cellGap(z - caz, psa.z, g.cellsizef, margin);
         for (int y = y0; y <= y1; ++y) {
             const float rowdy = g.cellsizef * float(cay - y);
+            const float gy = Opt::dim == 3 ? cellGap(y - cay, psa.y, g.cellsizef, margin) : 0.f;
+            int x0, x1;
+            if (!rowSpan(g, cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, margin, x0, x1)) continue;
             const std::uint32_t row = g.linear(0, y, z);
             const std::uint32_t pb = in.cell_start_fluid[row + std::uint32_t(x0)];
             const std::uint32_t pe = in.cell_start_fluid[row + std::uint32_t(x1) + 1u];
-            for (std::uint32_t j = pb; j < pe; ++j) {
-                const Float4 psb = in.poscell[j];
-                const float drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), psa.x - psb.x);
-                const float dry = Opt::dim == 3 ? (psa.y - psb.y) + rowdy : 0.f;
-                const float drz = (psa.z - psb.z) + rowdz;
-                const float rr2 = Opt::dim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz))
-                                                : fma32(drx, drx, drz * drz);
-                if (!(rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero)) continue;
-                const float fac = K::gradFactor(rr2, c.ker);
-                const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
-                const Float4 vb = in.velrho[j];
-                const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-                const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
-                ar = fma32(c.massfluid * dot_vf, va.w * in.press_ovrho[j].y, ar);
-                const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
-                visc = maxf(visc, viscDtPair(dot_vr, 1.f / (rr2 + c.eta2)));
+            if constexpr (!kCompact) {
+                for (std::uint32_t j = pb; j < pe; ++j) {
+                    float drx, dry, drz;
+                    const float rr2 = pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, drx, dry, drz);
+                    if (!isNeighbour(rr2, c)) continue;
+                    boundPair<Opt>(j, drx, dry, drz, rr2, va, in, c, ar, visc);
+                }
+            } else {
+                std::uint32_t idx[kCandidateChunk];
+                float bx[kCandidateChunk], by[kCandidateChunk], bz[kCandidateChunk], br[kCandidateChunk];
+                for (std::uint32_t j0 = pb; j0 < pe; j0 += kCandidateChunk) {
+                    const std::uint32_t je = pe - j0 > std::uint32_t(kCandidateChunk) ? j0 + kCandidateChunk : pe;
+                    int n = 0;
+                    for (std::uint32_t j = j0; j < je; ++j) {
+                        float drx, dry, drz;
+                        const float rr2 =
+                            pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, drx, dry, drz);
+                        idx[n] = j;
+                        bx[n] = drx;
+                        by[n] = dry;
+                        bz[n] = drz;
+                        br[n] = rr2;
+                        n += isNeighbour(rr2, c) ? 1 : 0;
+                    }
+                    for (int k = 0; k < n; ++k) boundPair<Opt>(idx[k], bx[k], by[k], bz[k], br[k], va, in, c, ar, visc);
+                }
             }
         }
     }

@@ -26,13 +26,14 @@ SEASPRING_HD inline float viscDtPair(float dot_vr, float ov_r2eta) { return dot_
 
 /// Artificial viscosity: the factor s such that a_a -= s * grad W (zero when the pair
 /// separates). `alpha` already includes ViscoBoundFactor for boundary neighbours.
+/// Computed for every pair and selected (no branch: SIMD lanes on the host).
 SEASPRING_HD inline float artificialViscosityFactor(float dot_vr, float ov_r2eta, float rho_a,
                                                     float rho_b, float mass_b, float alpha,
                                                     float cs0, float h) {
-    if (dot_vr >= 0.f) return 0.f;
     const float amubar = h * (dot_vr * ov_r2eta);
     const float robar = (rho_a + rho_b) * 0.5f;
-    return ((-alpha * cs0 * amubar) / robar) * mass_b;
+    const float s = ((-alpha * cs0 * amubar) / robar) * mass_b;
+    return dot_vr < 0.f ? s : 0.f;
 }
 
 /// Laminar viscosity: the factor s such that a_a += s * v_ab.
