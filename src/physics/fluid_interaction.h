@@ -51,13 +51,20 @@ struct FluidAccum {
     SymTensor gradvel{0, 0, 0, 0, 0, 0};  ///< SPS velocity gradient sums
 };
 
-/// Offset r_ab = r_a - r_b of a candidate b in the row (rowdy, rowdz) and its squared length.
+/// Particle a's cell offsets moved into the frame of one row of cells: y + rowdy, z + rowdz,
+/// rowdy/rowdz = cellsize * (a's cell - the row's cell) in y/z. Computed once per row.
+SEASPRING_HD inline Float4 rowFrame(const Float4& psa, float rowdy, float rowdz) {
+    return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
+}
+
+/// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
+/// rowFrame for that row.
 template <int kDim>
-SEASPRING_HD inline float pairOffset(const Float4& psa, const Float4& psb, int cax, float rowdy, float rowdz,
-                                     const CellGrid& g, float& drx, float& dry, float& drz) {
-    drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), psa.x - psb.x);
-    dry = kDim == 3 ? (psa.y - psb.y) + rowdy : 0.f;
-    drz = (psa.z - psb.z) + rowdz;
+SEASPRING_HD inline float pairOffset(const Float4& par, const Float4& psb, int cax, const CellGrid& g,
+                                     float& drx, float& dry, float& drz) {
+    drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), par.x - psb.x);
+    dry = kDim == 3 ? par.y - psb.y : 0.f;
+    drz = par.z - psb.z;
     return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
 }
 
@@ -98,7 +105,8 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const Float4 vb = in.velrho[j];
     const Float2 pb2 = in.press_ovrho[j];
     const float pressb = pb2.x, ovrhob = pb2.y;
-    const float ov_r2eta = 1.f / (rr2 + c.eta2);
+    float ov_r2eta, ov_rhosum;
+    pairReciprocals(rr2, c.eta2, va.w, vb.w, ov_r2eta, ov_rhosum);
 
     // Pressure.
     float prs = (pressa + pressb) * (ovrhoa * ovrhob);
@@ -116,9 +124,9 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const float dot3 = fma32(drx, t.frx, fma32(dry, t.fry, drz * t.frz));  // r . grad W
     t.visc = viscDtPair(dot_vr, ov_r2eta);
     if (Opt::visco == Viscosity::Artificial) {
-        t.cf -= artificialViscosityFactor(dot_vr, ov_r2eta, va.w, vb.w, massb, visco, c.cs0, c.ker.h);
+        t.cf -= artificialViscosityFactor(t.visc, ov_rhosum, massb, visco, c.cs0, c.ker.h);
     } else {
-        t.cv = laminarViscosityFactor(dot3, ov_r2eta, va.w, vb.w, massb, visco);
+        t.cv = laminarViscosityFactor(dot3, ov_r2eta, ov_rhosum, massb, visco);
         t.dvx = dvx;
         t.dvy = dvy;
         t.dvz = dvz;
@@ -190,9 +198,10 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
                                          float rowdy, float rowdz, const Float4& va, float ovrhoa,
                                          float pressa, const SymTensor& taua, const InteractionInputs& in,
                                          const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
+    const Float4 par = rowFrame(psa, rowdy, rowdz);
     for (std::uint32_t j = pb; j < pe; ++j) {
         float drx, dry, drz;
-        const float rr2 = pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, drx, dry, drz);
+        const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
         if (!isNeighbour(rr2, c)) continue;
         fluidPair<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
     }
@@ -235,13 +244,13 @@ struct PairBatch {
                              float rowdz, const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                              const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
                              FluidAccum& acc) {
+        const Float4 par = rowFrame(psa, rowdy, rowdz);
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
             for (int k = 0; k < take; ++k) {
                 const std::uint32_t j = pb + std::uint32_t(k);
                 jj[m + k] = j;
-                br[m + k] = pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, bx[m + k], by[m + k],
-                                                 bz[m + k]);
+                br[m + k] = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, bx[m + k], by[m + k], bz[m + k]);
             }
             m += take;
             pb += std::uint32_t(take);
@@ -352,10 +361,11 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
             const std::uint32_t row = g.linear(0, y, z);
             const std::uint32_t pb = in.cell_start_fluid[row + std::uint32_t(x0)];
             const std::uint32_t pe = in.cell_start_fluid[row + std::uint32_t(x1) + 1u];
+            const Float4 par = rowFrame(psa, rowdy, rowdz);
             if constexpr (!kCompact) {
                 for (std::uint32_t j = pb; j < pe; ++j) {
                     float drx, dry, drz;
-                    const float rr2 = pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, drx, dry, drz);
+                    const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
                     if (!isNeighbour(rr2, c)) continue;
                     boundPair<Opt>(j, drx, dry, drz, rr2, va, in, c, ar, visc);
                 }
@@ -367,8 +377,7 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                     int n = 0;
                     for (std::uint32_t j = j0; j < je; ++j) {
                         float drx, dry, drz;
-                        const float rr2 =
-                            pairOffset<Opt::dim>(psa, in.poscell[j], cax, rowdy, rowdz, g, drx, dry, drz);
+                        const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
                         idx[n] = j;
                         bx[n] = drx;
                         by[n] = dry;

@@ -24,22 +24,32 @@ enum class Viscosity { Artificial = 1, LaminarSps = 2, Laminar = 3 };
 /// pairs enters the CFL condition); ov_r2eta = 1/(r^2 + eta2).
 SEASPRING_HD inline float viscDtPair(float dot_vr, float ov_r2eta) { return dot_vr * ov_r2eta; }
 
-/// Artificial viscosity: the factor s such that a_a -= s * grad W (zero when the pair
-/// separates). `alpha` already includes ViscoBoundFactor for boundary neighbours.
-/// Computed for every pair and selected (no branch: SIMD lanes on the host).
-SEASPRING_HD inline float artificialViscosityFactor(float dot_vr, float ov_r2eta, float rho_a,
-                                                    float rho_b, float mass_b, float alpha,
-                                                    float cs0, float h) {
-    const float amubar = h * (dot_vr * ov_r2eta);
-    const float robar = (rho_a + rho_b) * 0.5f;
-    const float s = ((-alpha * cs0 * amubar) / robar) * mass_b;
-    return dot_vr < 0.f ? s : 0.f;
+/// 1/(r^2 + eta2) and 1/(rho_a + rho_b) of a pair from one division (the pair loop's only
+/// one): D = 1/((r^2 + eta2)(rho_a + rho_b)).
+SEASPRING_HD inline void pairReciprocals(float rr2, float eta2, float rho_a, float rho_b, float& ov_r2eta,
+                                         float& ov_rhosum) {
+    const float r2eta = rr2 + eta2, rhosum = rho_a + rho_b;
+    const float d = 1.f / (r2eta * rhosum);
+    ov_r2eta = d * rhosum;
+    ov_rhosum = d * r2eta;
 }
 
-/// Laminar viscosity: the factor s such that a_a += s * v_ab.
-SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_r2eta, float rho_a,
-                                                 float rho_b, float mass_b, float nu) {
-    const float temp = (4.f * nu * ov_r2eta) / (rho_a + rho_b);
+/// Artificial viscosity: the factor s such that a_a -= s * grad W, i.e. m_b Pi_ab with
+/// Pi_ab = -alpha c0 h (v_ab.r_ab/(r^2+eta2)) / rhobar, rhobar = (rho_a + rho_b)/2; zero when
+/// the pair separates. `visc_dt` = v_ab.r_ab/(r^2+eta2) (viscDtPair), `ov_rhosum` =
+/// 1/(rho_a + rho_b), `alpha` already includes ViscoBoundFactor for boundary neighbours.
+/// Computed for every pair and selected (no branch: SIMD lanes on the host).
+SEASPRING_HD inline float artificialViscosityFactor(float visc_dt, float ov_rhosum, float mass_b, float alpha,
+                                                    float cs0, float h) {
+    const float s = (((-2.f * alpha) * cs0) * (h * visc_dt)) * ov_rhosum * mass_b;
+    return visc_dt < 0.f ? s : 0.f;
+}
+
+/// Laminar viscosity (Lo & Shao): the factor s such that a_a += s * v_ab,
+/// s = m_b 4 nu (r.grad W)/((r^2+eta2)(rho_a+rho_b)).
+SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_r2eta, float ov_rhosum,
+                                                 float mass_b, float nu) {
+    const float temp = (4.f * nu * ov_r2eta) * ov_rhosum;
     return mass_b * temp * dot_rgradw;
 }
 

@@ -127,11 +127,14 @@ TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
 }
 
 TEST(Viscosity, ArtificialOnlyWhenApproaching) {
-    const float ov = 1.f / (1e-4f + 4e-6f);
-    EXPECT_EQ(artificialViscosityFactor(0.1f, ov, 1000, 1000, 0.001f, 0.1f, 30, 0.02f), 0.f);
-    const float s = artificialViscosityFactor(-0.1f, ov, 1000, 1000, 0.001f, 0.1f, 30, 0.02f);
+    float ov, ovsum;
+    pairReciprocals(1e-4f, 4e-6f, 1000.f, 1002.f, ov, ovsum);
+    EXPECT_NEAR(ov, 1.0 / (1e-4 + 4e-6), 1e-6 / (1e-4 + 4e-6));
+    EXPECT_NEAR(ovsum, 1.0 / 2002.0, 1e-6 / 2002.0);
+    EXPECT_EQ(artificialViscosityFactor(viscDtPair(0.1f, ov), ovsum, 0.001f, 0.1f, 30, 0.02f), 0.f);
+    const float s = artificialViscosityFactor(viscDtPair(-0.1f, ov), ovsum, 0.001f, 0.1f, 30, 0.02f);
     // Pi = -alpha c0 h (v.r/(r^2+eta2)) / rhobar, times m_b.
-    const double ref = (-0.1 * 30 * (0.02 * (-0.1 / (1e-4 + 4e-6))) / 1000.0) * 0.001;
+    const double ref = (-0.1 * 30 * (0.02 * (-0.1 / (1e-4 + 4e-6))) / 1001.0) * 0.001;
     EXPECT_NEAR(s, ref, 1e-6 * std::fabs(ref));
 }
 
