@@ -5,7 +5,7 @@
 # no output. Prints ns per particle per step next to DualSPHysics 5.4's numbers (H200) and
 # writes bench_fluid.csv in the work folder.
 #
-# Usage: tools/bench_fluid.sh [-gpu|-cpu -threads:N] [DP ...]   (default DPs: 0.01 0.006 0.004)
+# Usage: tools/bench_fluid.sh [-gpu|-cpu -threads:N] [-cellmode:M] [DP ...]   (default DPs: 0.01 0.006 0.004)
 # Env: SEASPRING_BIN (folder with seaspring and gencase; default build/bin),
 #      BENCH_DIR (work folder; default /tmp/seaspring_bench), BENCH_CASE (case XML),
 #      BENCH_TMAX (default 0.02).
@@ -19,7 +19,7 @@ backend=(-gpu)
 dps=()
 for a in "$@"; do
   case "$a" in
-    -gpu|-gpu:*|-cpu|-threads:*) [[ "$a" == -cpu || "$a" == -gpu* ]] && backend=("$a") || backend+=("$a") ;;
+    -gpu|-gpu:*|-cpu|-threads:*|-cellmode:*) [[ "$a" == -cpu || "$a" == -gpu* ]] && backend=("$a") || backend+=("$a") ;;
     *) dps+=("$a") ;;
   esac
 done

@@ -22,21 +22,20 @@ namespace seaspring::physics {
 
 enum class DensityDiffusion { None = 0, Molteni = 1, Fourtakas = 2, FourtakasFull = 3 };
 
-/// x^(1/7) for x near 1, in float, by its Taylor series in e = x - 1 to third order (Horner,
-/// multiplications and additions only: the same bits on every backend). The first omitted
-/// term, (65/2401) e^4, is < 2.2e-8 for |e| <= 0.03, below float resolution; the hydrostatic
-/// range is |e| = rho0 g |dz| / B = gamma g |dz| / c0^2 ~ 1e-3 over 2h.
-SEASPRING_HD inline float seventhRootNearOne(float x) {
-    const float e = x - 1.f;
+/// (1 + e)^(1/7) - 1 for small e, in float, by its Taylor series to third order (Horner,
+/// multiplications and additions only: the same bits on every backend; no cancellation, as
+/// there would be in computing (1 + e)^(1/7) and subtracting 1). The first omitted term,
+/// (65/2401) e^4, is < 2.2e-8 for |e| <= 0.03; the hydrostatic range is
+/// |e| = rho0 g |dz| / B = gamma g |dz| / c0^2 ~ 1e-3 over 2h.
+SEASPRING_HD inline float seventhRootMinusOne(float e) {
     // Binomial coefficients of (1+e)^(1/7): 1/7, -3/49, 13/343.
-    return 1.f + e * (0.142857143f + e * (-0.0612244898f + e * 0.0379008746f));
+    return e * (0.142857143f + e * (-0.0612244898f + e * 0.0379008746f));
 }
 
 /// Hydrostatic density difference rhoH_ab = rho0 ((1 + ddtgz drz)^(1/7) - 1), with
 /// ddtgz = -rho0 g_z / B and drz = z_a - z_b.
 SEASPRING_HD inline float hydrostaticDensityDifference(float drz, float ddtgz, float rho0) {
-    const float rh = 1.f + ddtgz * drz;
-    return rho0 * seventhRootNearOne(rh) - rho0;
+    return rho0 * seventhRootMinusOne(ddtgz * drz);
 }
 
 /// Molteni & Colagrossi pair term (added to D_a). `ovrho_b` = 1/rho_b, `ov_r2eta` =
@@ -53,8 +52,8 @@ SEASPRING_HD inline float ddtFourtakasPair(float rho_a, float rho_b, float ovrho
                                            float ov_r2eta, float dot3, float mass_b, float ddtkh,
                                            float cs0, float ddtgz, float rho0) {
     const float drho_h = hydrostaticDensityDifference(drz, ddtgz, rho0);
-    const float visc_densi = ddtkh * cs0 * ((rho_b - rho_a) - drho_h) * ov_r2eta;
-    return -(visc_densi * dot3 * (mass_b * ovrho_b));
+    const float k = -(ddtkh * cs0) * mass_b;  // per particle (hoisted out of the pair loop)
+    return (((k * ((rho_b - rho_a) - drho_h)) * ov_r2eta) * dot3) * ovrho_b;
 }
 
 }  // namespace seaspring::physics

@@ -117,7 +117,7 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     // Continuity.
     const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
     const float dot_vf = fma32(dvx, t.frx, fma32(dvy, t.fry, dvz * t.frz));
-    t.ar = (massb * dot_vf) * (va.w * ovrhob);
+    t.ar = dot_vf * (ovrhob * (massb * va.w));  // massb * rho_a: per particle
 
     // Viscous time-step measure and viscosity.
     const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));

@@ -41,7 +41,8 @@ SEASPRING_HD inline void pairReciprocals(float rr2, float eta2, float rho_a, flo
 /// Computed for every pair and selected (no branch: SIMD lanes on the host).
 SEASPRING_HD inline float artificialViscosityFactor(float visc_dt, float ov_rhosum, float mass_b, float alpha,
                                                     float cs0, float h) {
-    const float s = (((-2.f * alpha) * cs0) * (h * visc_dt)) * ov_rhosum * mass_b;
+    const float k = (((-2.f * alpha) * cs0) * h) * mass_b;  // per particle (hoisted out of the pair loop)
+    const float s = (k * visc_dt) * ov_rhosum;
     return visc_dt < 0.f ? s : 0.f;
 }
 

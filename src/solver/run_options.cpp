@@ -202,9 +202,9 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
         } else if (name == "nsteps") {
             o.nsteps = toInteger(g, 0, LLONG_MAX);
         } else if (name == "cellmode") {
-            if (g.value != "full" && g.value != "h")
-                usageError(g.arg + ": \"" + g.value + "\" is not a cell mode (supported: full, h)");
-            o.cell_div = g.value == "full" ? 1 : 2;
+            if (g.value != "full" && g.value != "h" && g.value != "third")
+                usageError(g.arg + ": \"" + g.value + "\" is not a cell mode (supported: full, h, third)");
+            o.cell_div = g.value == "full" ? 1 : (g.value == "h" ? 2 : 3);
         } else if (name == "progress") {
             o.progress_interval = toDouble(g, Range::NonNegative);
         } else if (name == "quiet") {
@@ -293,7 +293,8 @@ Run control:
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
                        files in OUTDIR/vtk), none
   -svres[:0|1]         accepted for DualSPHysics command lines; run.json is always written
-  -cellmode:full|h     neighbour cells of size 2h (full) or h (h, the default)
+  -cellmode:full|h|third  neighbour cells of size 2h (full), h (h, the default) or
+                       2h/3 (third, SeaSpring's: fewer candidates, more rows)
   -progress:S          a progress line every S >= 0 seconds of wall time (default 1; 0: none)
   -quiet               no banner or progress lines (summary and errors only)
 Physics (override the case's <parameters>):

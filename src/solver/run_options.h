@@ -29,7 +29,7 @@ struct RunOptions {
     std::optional<double> tmax, tout, visco, visco_bound_factor, ddt_value, cfl, dt_fixed;
     std::optional<int> step_algorithm, verlet_steps, kernel, visco_treatment, ddt;
     std::optional<long long> nsteps;  ///< stop after this many steps
-    int cell_div = 2;  ///< 1: cells of 2h (-cellmode:full), 2: cells of h (-cellmode:h)
+    int cell_div = 2;  ///< cells of 2h/cell_div: 1 -cellmode:full, 2 -cellmode:h, 3 -cellmode:third
     double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none
     bool quiet = false;
     bool help = false, version = false;  ///< set alone: the rest is not parsed

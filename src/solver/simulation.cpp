@@ -48,7 +48,7 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div) {
     static const char* ddt[] = {"no DDT", "DDT Molteni", "DDT Fourtakas", "DDT Fourtakas full"};
     s << ", " << ddt[p.density_dt];
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
-    s << ", DBC, CFL " << p.cfl_number << ", cells of " << (cell_div == 1 ? "2h" : "h");
+    s << ", DBC, CFL " << p.cfl_number << ", cells of " << (cell_div == 1 ? "2h" : (cell_div == 2 ? "h" : "2h/3"));
     return s.str();
 }
 

@@ -94,11 +94,13 @@ TEST(Eos, TaitHandValues) {
     EXPECT_NEAR(taitB(30.0, 1000.0, 7.0), 900.0 * 1000.0 / 7.0, 1e-9);
 }
 
-TEST(Ddt, SeventhRootNearOne) {
-    for (double x = 0.97; x <= 1.03; x += 0.0005) {
-        const double ref = std::pow(double(float(x)), 1.0 / 7.0);
-        EXPECT_NEAR(seventhRootNearOne(float(x)), ref, 2.5e-7) << x;
+TEST(Ddt, SeventhRootMinusOne) {
+    for (double e = -0.03; e <= 0.03; e += 0.0005) {
+        const double ref = std::pow(1.0 + double(float(e)), 1.0 / 7.0) - 1.0;
+        // Relative to the result: no cancellation near e = 0.
+        EXPECT_NEAR(seventhRootMinusOne(float(e)), ref, 3e-7 * std::fabs(ref) + 2.5e-8) << e;
     }
+    EXPECT_EQ(seventhRootMinusOne(0.f), 0.f);
 }
 
 TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
@@ -112,7 +114,7 @@ TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
     const float dh = hydrostaticDensityDifference(float(za - zb), ddtgz, float(rho0));
     // Exact: rho0 ((1 + rho0 g dz / B)^(1/7) - 1) with sign from gz.
     const double exact = rho0 * (std::pow(1.0 + rho0 * g * (za - zb) / b, 1.0 / 7.0) - 1.0);
-    EXPECT_NEAR(dh, exact, 2e-4);
+    EXPECT_NEAR(dh, exact, 1e-5 * std::fabs(exact));
     // Fourtakas' rhoH is referred to rho0, not rho_a: the relative error is about
     // rho0 g depth / B (3% at 0.4 m depth here).
     EXPECT_NEAR(dh, rho_b - rho_a, 0.04 * std::fabs(rho_b - rho_a));

@@ -92,6 +92,7 @@ TEST(RunOptions, RunControl) {
     EXPECT_EQ(*parseWith({"-nsteps:9000000000"}).nsteps, 9000000000LL);
     EXPECT_EQ(parseWith({"-cellmode:full"}).cell_div, 1);
     EXPECT_EQ(parseWith({"-cellmode:h"}).cell_div, 2);
+    EXPECT_EQ(parseWith({"-cellmode:third"}).cell_div, 3);
     EXPECT_EQ(parseWith({"-progress:0"}).progress_interval, 0.0);
     EXPECT_EQ(parseWith({"-progress:2.5"}).progress_interval, 2.5);
     EXPECT_TRUE(parseWith({"-quiet"}).quiet);
@@ -264,7 +265,7 @@ TEST(RunOptions, ValuesMustLieInRange) {
     expectError({"-progress:-1"}, "-progress:-1: -1 must be >= 0");
     expectError({"-svres:2"}, "-svres:2: 2 must be 0..1");
     expectError({"-cellmode:half"},
-                "-cellmode:half: \"half\" is not a cell mode (supported: full, h)");
+                "-cellmode:half: \"half\" is not a cell mode (supported: full, h, third)");
     expectError({"-sv:bi4"}, "-sv:bi4: unknown output \"bi4\" (supported: h5, vtk, none)");
     expectError({"-sv:h5,"}, "-sv:h5,: unknown output \"\" (supported: h5, vtk, none)");
     expectError({"-sv:vtk,vtk"}, "-sv:vtk,vtk: \"vtk\" is listed twice");
