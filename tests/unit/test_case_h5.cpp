@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "error_expect.h"
 #include "io/case_h5.h"
 #include "io/h5_util.h"
 
@@ -22,18 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Message of the seaspring::Error thrown by f (a test failure if none is thrown).
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected a seaspring::Error";
-    return "";
-}
+using test::errorOf;
 
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << "message: " << (text)
 
 template <typename T>
 bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {

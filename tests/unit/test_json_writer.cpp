@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "error_expect.h"
 #include "io/json_writer.h"
 
 namespace seaspring::io {
@@ -21,18 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected a seaspring::Error";
-    return "";
-}
+using test::errorOf;
 
-#define EXPECT_HAS(text, part) \
-    EXPECT_NE((text).find(part), std::string::npos) << "message: " << (text)
 
 TEST(JsonWriter, NestedDocumentExactText) {
     JsonWriter j;
