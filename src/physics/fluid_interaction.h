@@ -191,6 +191,43 @@ SEASPRING_HD inline void fluidPair(std::uint32_t j, float drx, float dry, float 
     addPairTerms<Opt, kBound>(acc, fluidPairTerms<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c));
 }
 
+/// The cells around a particle's cell that its neighbour search visits: rows y0..y1, z0..z1
+/// (2D: y0 = y1 = 0) of at most 2 range + 1 cells each.
+struct SearchBox {
+    int cax, cay, caz, y0, y1, z0, z1;
+    float margin;  ///< rowSpan's safety margin [m]
+};
+
+template <int kDim>
+SEASPRING_HD inline SearchBox searchBox(const Float4& psa, const CellGrid& g) {
+    SearchBox b;
+    b.cax = packedCellX(g, psa.w);
+    b.cay = kDim == 3 ? packedCellY(g, psa.w) : 0;
+    b.caz = packedCellZ(g, psa.w);
+    b.y0 = kDim == 3 ? maxi(b.cay - g.range, 0) : 0;
+    b.y1 = kDim == 3 ? mini(b.cay + g.range, g.ncy - 1) : 0;
+    b.z0 = maxi(b.caz - g.range, 0);
+    b.z1 = mini(b.caz + g.range, g.ncz - 1);
+    b.margin = kRowSpanMargin * g.cellsizef;
+    return b;
+}
+
+/// Candidates [pb, pe) of row (y, z) in the block whose first indices per cell are
+/// `cell_start`: the cells of the row in reach of `psa` (rowSpan). `gz` = the row's gap in z
+/// (cellGap, once per z). False when the row is out of reach.
+template <int kDim>
+SEASPRING_HD inline bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
+                                       const std::uint32_t* cell_start, const FluidConstants& c,
+                                       const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
+    const float gy = kDim == 3 ? cellGap(y - b.cay, psa.y, g.cellsizef, b.margin) : 0.f;
+    int x0, x1;
+    if (!rowSpan(g, b.cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, b.margin, x0, x1)) return false;
+    const std::uint32_t row = g.linear(0, y, z);
+    pb = cell_start[row + std::uint32_t(x0)];
+    pe = cell_start[row + std::uint32_t(x1) + 1u];
+    return true;
+}
+
 /// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound): the
 /// direct loop (the GPU's path).
 template <class Opt, bool kBound>
@@ -266,26 +303,17 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
                                            const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
-    const int cax = packedCellX(g, psa.w);
-    const int cay = Opt::dim == 3 ? packedCellY(g, psa.w) : 0;
-    const int caz = packedCellZ(g, psa.w);
-    const int y0 = Opt::dim == 3 ? maxi(cay - g.range, 0) : 0;
-    const int y1 = Opt::dim == 3 ? mini(cay + g.range, g.ncy - 1) : 0;
-    const int z0 = maxi(caz - g.range, 0), z1 = mini(caz + g.range, g.ncz - 1);
-    const float margin = kRowSpanMargin * g.cellsizef;
+    const SearchBox box = searchBox<Opt::dim>(psa, g);
+    const int cax = box.cax;
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
-    for (int z = z0; z <= z1; ++z) {
-        const float rowdz = g.cellsizef * float(caz - z);
-        const float gz = cellGap(z - caz, psa.z, g.cellsizef, margin);
-        for (int y = y0; y <= y1; ++y) {
-            const float rowdy = g.cellsizef * float(cay - y);
-            const float gy = Opt::dim == 3 ? cellGap(y - cay, psa.y, g.cellsizef, margin) : 0.f;
-            int x0, x1;
-            if (!rowSpan(g, cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, margin, x0, x1)) continue;
-            const std::uint32_t row = g.linear(0, y, z);
-            const std::uint32_t pb = cell_start[row + std::uint32_t(x0)];
-            const std::uint32_t pe = cell_start[row + std::uint32_t(x1) + 1u];
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        for (int y = box.y0; y <= box.y1; ++y) {
+            std::uint32_t pb, pe;
+            if (!rowCandidates<Opt::dim>(box, psa, y, z, gz, cell_start, c, g, pb, pe)) continue;
+            const float rowdy = g.cellsizef * float(box.cay - y);
             if constexpr (kCompact)
                 batch.addRow(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua, in, c, g, acc);
             else
@@ -342,25 +370,16 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                                              float& ar_out, float& visc_out) {
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
-    const int cax = packedCellX(g, psa.w);
-    const int cay = Opt::dim == 3 ? packedCellY(g, psa.w) : 0;
-    const int caz = packedCellZ(g, psa.w);
-    const int y0 = Opt::dim == 3 ? maxi(cay - g.range, 0) : 0;
-    const int y1 = Opt::dim == 3 ? mini(cay + g.range, g.ncy - 1) : 0;
-    const int z0 = maxi(caz - g.range, 0), z1 = mini(caz + g.range, g.ncz - 1);
-    const float margin = kRowSpanMargin * g.cellsizef;
+    const SearchBox box = searchBox<Opt::dim>(psa, g);
+    const int cax = box.cax;
     float ar = 0.f, visc = 0.f;
-    for (int z = z0; z <= z1; ++z) {
-        const float rowdz = g.cellsizef * float(caz - z);
-        const float gz = cellGap(z - caz, psa.z, g.cellsizef, margin);
-        for (int y = y0; y <= y1; ++y) {
-            const float rowdy = g.cellsizef * float(cay - y);
-            const float gy = Opt::dim == 3 ? cellGap(y - cay, psa.y, g.cellsizef, margin) : 0.f;
-            int x0, x1;
-            if (!rowSpan(g, cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, margin, x0, x1)) continue;
-            const std::uint32_t row = g.linear(0, y, z);
-            const std::uint32_t pb = in.cell_start_fluid[row + std::uint32_t(x0)];
-            const std::uint32_t pe = in.cell_start_fluid[row + std::uint32_t(x1) + 1u];
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        for (int y = box.y0; y <= box.y1; ++y) {
+            std::uint32_t pb, pe;
+            if (!rowCandidates<Opt::dim>(box, psa, y, z, gz, in.cell_start_fluid, c, g, pb, pe)) continue;
+            const float rowdy = g.cellsizef * float(box.cay - y);
             const Float4 par = rowFrame(psa, rowdy, rowdz);
             if constexpr (!kCompact) {
                 for (std::uint32_t j = pb; j < pe; ++j) {
