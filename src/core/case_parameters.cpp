@@ -60,6 +60,7 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"YZPeriodic", "0", K::Number, "periodic in y and z"},
         {"Symmetry", "0", K::Number, "symmetry plane y=0"},
         {"DivCleanKp", "0", K::Number, "divergence cleaning coefficient"},
+        {"VcpmDtCoef", "0.8", K::Number, "VCPM solid sub-step = VcpmDtCoef*dp/c_S (SeaSpring)"},
     };
     return table;
 }

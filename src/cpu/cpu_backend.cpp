@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "cpu/cpu_solid.h"
 
 namespace seaspring::cpu {
 
@@ -22,6 +23,11 @@ physics::DtMaxima cpuForces_wendland(const solver::PhysicsChoice&, CpuArrays&, s
 physics::DtMaxima cpuForces_cubic(const solver::PhysicsChoice&, CpuArrays&, std::uint32_t,
                                   std::uint32_t, const physics::FluidConstants&,
                                   const physics::CellGrid&);
+
+void cpuSolidHydro_wendland(const solver::PhysicsChoice&, CpuArrays&, const std::uint32_t*, std::uint32_t,
+                            physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
+void cpuSolidHydro_cubic(const solver::PhysicsChoice&, CpuArrays&, const std::uint32_t*, std::uint32_t,
+                         physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
 
 physics::DtMaxima cpuComputeForces(const solver::PhysicsChoice& choice, CpuArrays& a,
                                    std::uint32_t nbound, std::uint32_t nfluid,
@@ -110,12 +116,17 @@ public:
         a_.cell_start_fluid.assign(nc, 0);
         moving_pos0_ = s.moving_pos0;
         moving_object_ = s.moving_object;
+        if (!s.solid.empty()) solid_.init(s.solid, s.step);
         sortRange(0, nbound_, a_.cell_start_bound);
+        solid_.updateSlots(a_.id.data(), nbound_);
         bound_sorted_ = true;
     }
 
     void divide() override {
-        if (setup_.nmoving > 0 || !bound_sorted_) sortRange(0, nbound_, a_.cell_start_bound);
+        if (setup_.nmoving > 0 || !solid_.empty() || !bound_sorted_) {
+            sortRange(0, nbound_, a_.cell_start_bound);
+            solid_.updateSlots(a_.id.data(), nbound_);
+        }
         nfluid_ = sortRange(nbound_, nbound_ + nfluid_, a_.cell_start_fluid) - nbound_;
         physics::ParticleView v = a_.view();
         const std::int64_t n = std::int64_t(nbound_) + nfluid_;
@@ -158,6 +169,21 @@ public:
             physics::verletAt(std::uint32_t(i), nbound_, v, dt, euler, setup_.step);
     }
 
+    void solidHydroForces() override {
+        if (solid_.empty()) return;
+        if (setup_.physics.kernel == physics::KernelType::Wendland)
+            cpuSolidHydro_wendland(setup_.physics, a_, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
+                                   setup_.grid);
+        else
+            cpuSolidHydro_cubic(setup_.physics, a_, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
+                                setup_.grid);
+    }
+    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) override {
+        if (solid_.empty()) return;
+        solid_.steps(dt, n, motions);
+        solid_.toBoundary(a_.pos.data(), a_.velrho.data());
+    }
+
     std::uint32_t activeFluid() const override { return nfluid_; }
 
     void download(solver::HostState& out) override {
@@ -171,6 +197,7 @@ public:
             out.velrho[id] = a_.velrho[i];
             out.excl[id] = a_.excl[i];
         }
+        if (!solid_.empty()) solid_.download(out);
     }
 
 private:
@@ -218,6 +245,7 @@ private:
     std::uint32_t nbound_ = 0, nfluid_ = 0;
     bool bound_sorted_ = false;
     CpuArrays a_;
+    CpuSolid solid_;
     std::vector<physics::Double3> moving_pos0_;
     std::vector<std::uint16_t> moving_object_;
     std::vector<std::uint64_t> scratch_u64_;

@@ -10,20 +10,37 @@
 #include "cpu/cpu_backend.h"
 #include "physics/fluid_interaction.h"
 #include "physics/particle_updates.h"
+#include "physics/solid_coupling.h"
 
 namespace seaspring::cpu {
+
+inline physics::InteractionInputs interactionInputs(CpuArrays& a, bool sps) {
+    physics::InteractionInputs in;
+    in.poscell = a.poscell.data();
+    in.velrho = a.velrho.data();
+    in.cell_start_bound = a.cell_start_bound.data();
+    in.cell_start_fluid = a.cell_start_fluid.data();
+    in.tau = sps ? a.tau.data() : nullptr;
+    in.press_ovrho = a.press_ovrho.data();
+    return in;
+}
+
+/// The hydrodynamic force on each solid particle s (sorted index slot[s]) from the state of
+/// the last force evaluation (press_ovrho, tau as that evaluation left them).
+template <class Opt>
+void cpuSolidHydroFor(CpuArrays& a, const std::uint32_t* slot, std::uint32_t nsolid, physics::Double3* out,
+                      const physics::FluidConstants& c, const physics::CellGrid& g) {
+    const physics::InteractionInputs in = interactionInputs(a, Opt::sps);
+#pragma omp parallel for schedule(dynamic, 64)
+    for (std::int64_t s = 0; s < std::int64_t(nsolid); ++s)
+        out[s] = physics::hydroForceOnBoundary<Opt>(slot[s], in, c, g);
+}
 
 template <class Opt>
 physics::DtMaxima cpuForcesFor(CpuArrays& a, std::uint32_t nbound, std::uint32_t nfluid,
                                const physics::FluidConstants& c, const physics::CellGrid& g) {
     using namespace physics;
-    InteractionInputs in;
-    in.poscell = a.poscell.data();
-    in.velrho = a.velrho.data();
-    in.cell_start_bound = a.cell_start_bound.data();
-    in.cell_start_fluid = a.cell_start_fluid.data();
-    in.tau = Opt::sps ? a.tau.data() : nullptr;
-    in.press_ovrho = a.press_ovrho.data();
+    const InteractionInputs in = interactionInputs(a, Opt::sps);
     const std::int64_t nb = nbound, np = std::int64_t(nbound) + nfluid;
     const ParticleView v = a.view();
 #pragma omp parallel

@@ -41,6 +41,11 @@ void writeContents(const std::string& path, const PartFrame& f) {
     h5::writeDataset<std::uint8_t>(file, "type", f.type, f.np, 1, contiguous);
     h5::writeDataset<std::uint16_t>(file, "mk", f.mk, f.np, 1, contiguous);
     h5::writeDataset<std::uint8_t>(file, "excluded", f.excluded, f.np, 1, contiguous);
+    if (f.disp) {
+        h5::writeDataset<float>(file, "disp", f.disp, f.np, 3, contiguous);
+        h5::writeDataset<float>(file, "strain", f.strain, f.np, 1, contiguous);
+        h5::writeDataset<std::uint8_t>(file, "broken", f.broken, f.np, 1, contiguous);
+    }
     h5::writeDoubleAttribute(file, "time", f.time);
     h5::writeInt64Attribute(file, "step", f.step);
     h5::writeInt64Attribute(file, "np", static_cast<std::int64_t>(f.np));
@@ -122,6 +127,14 @@ PartData readPartH5(const std::string& path) {
     h5::readDatasetInto<std::uint8_t>(file, "type", d.type.data(), np, 1);
     h5::readDatasetInto<std::uint16_t>(file, "mk", d.mk.data(), np, 1);
     h5::readDatasetInto<std::uint8_t>(file, "excluded", d.excluded.data(), np, 1);
+    if (file.hasChild("disp")) {
+        d.disp.resize(3 * np);
+        d.strain.resize(np);
+        d.broken.resize(np);
+        h5::readDatasetInto<float>(file, "disp", d.disp.data(), np, 3);
+        h5::readDatasetInto<float>(file, "strain", d.strain.data(), np, 1);
+        h5::readDatasetInto<std::uint8_t>(file, "broken", d.broken.data(), np, 1);
+    }
     return d;
 }
 

@@ -10,6 +10,10 @@
 ///   /mk    uint16 [np]                  /excluded uint8 [np] (0 active, >0 excluded: 1 left
 ///                                                  the domain, 2 density out of range,
 ///                                                  3 not finite)
+///   with VCPM solids only (zero for the other particles):
+///   /disp  float32 [np x 3] displacement from the initial position [m]
+///   /strain float32 [np] mean relative elongation (|r|-L0)/L0 of the intact bonds
+///   /broken uint8 [np] number of broken bonds
 ///   root attributes: time (float64 [s]), step (int64, time steps done), np (int64),
 ///                    format (string), format_version (int64)
 /// np = 0 is valid (empty datasets). The file is written as "part_NNNN.h5.tmp" and renamed
@@ -43,6 +47,10 @@ struct PartFrame {
     const std::uint8_t* type = nullptr;      ///< np (ParticleType values)
     const std::uint16_t* mk = nullptr;       ///< np
     const std::uint8_t* excluded = nullptr;  ///< np, 0 = active, >0 = excluded (reason code)
+    // Solid fields: all three or none (cases without VCPM solids).
+    const float* disp = nullptr;             ///< 3*np [m]
+    const float* strain = nullptr;           ///< np
+    const std::uint8_t* broken = nullptr;    ///< np
 };
 
 /// "data/part_0007.h5" for index 7 (at least 4 digits; "data/part_12345.h5" beyond).
@@ -63,6 +71,8 @@ struct PartData {
     std::vector<std::uint32_t> id;
     std::vector<std::uint8_t> type, excluded;
     std::vector<std::uint16_t> mk;
+    std::vector<float> disp, strain;          ///< solid fields (empty when absent)
+    std::vector<std::uint8_t> broken;
     std::size_t np() const { return id.size(); }
 };
 

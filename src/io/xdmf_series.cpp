@@ -30,6 +30,10 @@ constexpr AttributeSpec kAttributes[] = {
     {"mk", "Scalar", "UInt", 2, 1},     {"id", "Scalar", "UInt", 4, 1},
     {"excluded", "Scalar", "UChar", 1, 1},
 };
+/// The solid fields (cases with VCPM solids).
+constexpr AttributeSpec kSolidAttributes[] = {
+    {"disp", "Vector", "Float", 4, 3}, {"strain", "Scalar", "Float", 4, 1}, {"broken", "Scalar", "UChar", 1, 1},
+};
 
 /// `text` with the five XML special characters replaced by entities.
 std::string xmlEscape(const std::string& text) {
@@ -59,7 +63,13 @@ std::string dataItem(const std::string& file, const char* dataset, std::size_t n
 }
 
 /// The Uniform grid of one frame, indented for its place in the collection.
-std::string frameXml(const std::string& h5_file, double time, std::size_t np) {
+std::string attributeXml(const std::string& file, const AttributeSpec& a, std::size_t np) {
+    return "        <Attribute Name=\"" + std::string(a.name) + "\" AttributeType=\"" + a.attribute_type +
+           "\" Center=\"Node\">\n          " + dataItem(file, a.name, np, a.components, a.number_type, a.precision) +
+           "\n        </Attribute>\n";
+}
+
+std::string frameXml(const std::string& h5_file, double time, std::size_t np, bool solids) {
     const std::string file = xmlEscape(h5_file);
     char time_text[40];
     std::snprintf(time_text, sizeof time_text, "%.17g", time);
@@ -72,13 +82,9 @@ std::string frameXml(const std::string& h5_file, double time, std::size_t np) {
     x += "        <Geometry GeometryType=\"XYZ\">\n";
     x += "          " + dataItem(file, "pos", np, 3, "Float", 8) + "\n";
     x += "        </Geometry>\n";
-    for (const AttributeSpec& a : kAttributes) {
-        x += "        <Attribute Name=\"" + std::string(a.name) + "\" AttributeType=\"" +
-             a.attribute_type + "\" Center=\"Node\">\n";
-        x += "          " + dataItem(file, a.name, np, a.components, a.number_type, a.precision) +
-             "\n";
-        x += "        </Attribute>\n";
-    }
+    for (const AttributeSpec& a : kAttributes) x += attributeXml(file, a, np);
+    if (solids)
+        for (const AttributeSpec& a : kSolidAttributes) x += attributeXml(file, a, np);
     x += "      </Grid>\n";
     return x;
 }
@@ -89,12 +95,12 @@ XdmfSeries::XdmfSeries(std::string outdir)
     : outdir_(std::move(outdir)),
       path_((std::filesystem::path(outdir_) / "parts.xdmf").string()) {}
 
-void XdmfSeries::add(const std::string& h5_relative_path, double time, std::size_t np) {
+void XdmfSeries::add(const std::string& h5_relative_path, double time, std::size_t np, bool solids) {
     if (h5_relative_path.empty()) throw Error(formatLocation(path_, 0, "empty part file path"));
     if (!std::isfinite(time))
         throw Error(formatLocation(path_, 0, "frame " + h5_relative_path + ": time " +
                                                  std::to_string(time) + " is not finite"));
-    frames_.push_back(frameXml(h5_relative_path, time, np));
+    frames_.push_back(frameXml(h5_relative_path, time, np, solids));
 
     std::string xml;
     xml += "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n";

@@ -7,7 +7,8 @@
 /// each frame is a Uniform grid with its Time, a Polyvertex topology (one vertex per
 /// particle, excluded ones included), XYZ geometry from "FILE:/pos", and node attributes
 /// vel (Vector, Float 4), rhop and press (Scalar, Float 4), type (UChar 1), mk (UInt 2),
-/// id (UInt 4) and excluded (UChar 1) — the element types of the part file (part_output.h).
+/// id (UInt 4) and excluded (UChar 1) — the element types of the part file (part_output.h);
+/// with VCPM solids also disp (Vector, Float 4), strain (Float 4) and broken (UChar 1).
 /// HDF5 paths are written as given, relative to the folder of parts.xdmf, so that an output
 /// folder can be moved or copied as a whole. Times are printed with "%.17g".
 #pragma once
@@ -28,7 +29,8 @@ public:
     /// file relative to OUTDIR, as writePartH5 returns it ("data/part_0003.h5"). Throws
     /// seaspring::Error for an empty path, a non-finite time or a file that cannot be
     /// written; the frame is then not kept.
-    void add(const std::string& h5_relative_path, double time, std::size_t np);
+    /// `solids`: the part file holds the solid fields (disp, strain, broken).
+    void add(const std::string& h5_relative_path, double time, std::size_t np, bool solids = false);
 
     /// OUTDIR/parts.xdmf.
     const std::string& path() const { return path_; }

@@ -14,6 +14,7 @@
 #include "physics/fluid_constants.h"
 #include "physics/particle_updates.h"
 #include "physics/time_integration.h"
+#include "solver/solid_setup.h"
 
 namespace seaspring::solver {
 
@@ -25,7 +26,8 @@ struct PhysicsChoice {
     int dim = 3;
 };
 
-/// Initial data, particles in id order: [0, nbound) boundary (fixed then moving), then fluid.
+/// Initial data, particles in id order: [0, nbound) boundary (fixed, moving, then VCPM solid
+/// particles, which the fluid sees as DBC boundary particles), then fluid.
 struct BackendSetup {
     PhysicsChoice physics;
     physics::FluidConstants fluid;
@@ -40,6 +42,7 @@ struct BackendSetup {
     std::vector<physics::Double3> moving_pos0;    ///< nmoving: initial positions
     std::vector<std::uint16_t> moving_object;     ///< nmoving: index into the motions array
     std::uint32_t motion_objects = 0;
+    SolidSetup solid;                             ///< VCPM solids (empty when none)
 };
 
 /// State copied back to the host, in id order.
@@ -47,6 +50,10 @@ struct HostState {
     std::vector<physics::Double3> pos;
     std::vector<physics::Float4> velrho;
     std::vector<std::uint8_t> excl;
+    // VCPM solids (empty when the case has none), solid-index order.
+    std::vector<physics::Double3> solid_vel;     ///< double-precision velocity
+    std::vector<physics::Double3> solid_force;   ///< last hydrodynamic force F_F->S [N]
+    std::vector<std::uint8_t> bond_broken;       ///< per bond slot (SolidSetup layout)
 };
 
 class Backend {
@@ -67,6 +74,14 @@ public:
     virtual void symplecticPredictor(double dt) = 0;
     virtual void symplecticCorrector(double dt) = 0;
     virtual void verletStep(double dt, bool euler) = 0;
+    /// VCPM solids: the hydrodynamic force on every solid particle (Eq. 16) from the state of
+    /// the last force evaluation (call it after computeForces, before the integration).
+    virtual void solidHydroForces() = 0;
+    /// VCPM solids: `n` sub-steps of `dt` with the hydrodynamic force held fixed; `motions`
+    /// carries each motion object's pose at the start and the end of the n sub-steps (clamp
+    /// nodes on moving boundaries move linearly in between). Then copies the solid positions
+    /// and velocities into the boundary block.
+    virtual void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) = 0;
     /// Active fluid particles now.
     virtual std::uint32_t activeFluid() const = 0;
     /// Waits for queued device work (phase timers only; the CPU backend has none).

@@ -33,4 +33,17 @@ void dispatchViscoDdt(const PhysicsChoice& c, F&& f) {
     }
 }
 
+/// Viscosity only (no density diffusion): the hydrodynamic force on solids does not depend on it.
+template <class Kernel, int kDim, class F>
+void dispatchVisco(const PhysicsChoice& c, F&& f) {
+    using physics::DensityDiffusion;
+    using physics::FluidOptions;
+    using physics::Viscosity;
+    switch (c.visco) {
+        case Viscosity::Artificial: f(FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>{}); break;
+        case Viscosity::LaminarSps: f(FluidOptions<Kernel, Viscosity::LaminarSps, DensityDiffusion::None, kDim>{}); break;
+        case Viscosity::Laminar: f(FluidOptions<Kernel, Viscosity::Laminar, DensityDiffusion::None, kDim>{}); break;
+    }
+}
+
 }  // namespace seaspring::solver

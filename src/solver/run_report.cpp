@@ -41,6 +41,17 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);
     j.value("outputs", s.outputs);
+    if (s.nsolid > 0) {
+        j.beginObject("solids");
+        j.value("particles", static_cast<long long>(s.nsolid));
+        j.value("bonds", static_cast<long long>(s.bonds));
+        j.value("clamp_bonds", static_cast<long long>(s.clamp_bonds));
+        j.value("broken_bonds", static_cast<long long>(s.broken_bonds));
+        j.value("substeps", s.solid_substeps);
+        j.value("max_substeps_per_step", s.omega_max);
+        j.value("solid_dt_s", s.solid_dt);
+        j.endObject();
+    }
     j.value("stop_reason", s.stop_reason);
     j.value("state_hash", s.state_hash);
     j.endObject();
@@ -60,6 +71,14 @@ void printSummary(std::ostream& os, const RunSummary& s) {
                   s.np, s.nfluid, s.fluid_active, s.excluded_position, s.excluded_density,
                   s.excluded_not_finite, s.dtmin_hits);
     os << line;
+    if (s.nsolid > 0) {
+        std::snprintf(line, sizeof line,
+                      "Solids: %u particles, %llu bonds + %llu clamp bonds, %llu broken; %lld sub-steps of at most "
+                      "%.4g s (at most %d per step)\n",
+                      s.nsolid, static_cast<unsigned long long>(s.bonds), static_cast<unsigned long long>(s.clamp_bonds),
+                      static_cast<unsigned long long>(s.broken_bonds), s.solid_substeps, s.solid_dt, s.omega_max);
+        os << line;
+    }
     os << "State hash: " << s.state_hash << "\n";
 }
 

@@ -56,10 +56,6 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
     using namespace physics;
     const ParticleSet& ps = c.particles;
     const std::size_t np = ps.size();
-    if (c.nsolid > 0)
-        throwInputError(c.xml_path, 0, "the case has " + std::to_string(c.nsolid) +
-                        " VCPM solid particles; this seaspring runs fluid with fixed and moving "
-                        "boundaries only (solids are the next release)");
     for (std::size_t i = 0; i < np; ++i)
         if (ps.id[i] != i)
             throwInputError(c.h5_path, 0, "particle " + std::to_string(i) + " has id " +
@@ -115,7 +111,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
     st.rhop_out_min = float(p.rhop_out_min);
     st.rhop_out_max = float(p.rhop_out_max);
 
-    s.nbound = c.nfixed + c.nmoving;
+    s.nbound = c.nfixed + c.nmoving + c.nsolid;  // solids are DBC boundary particles for the fluid
     s.nfluid = c.nfluid;
     s.first_moving = c.nfixed;
     s.nmoving = c.nmoving;
@@ -145,6 +141,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
         throwInputError(c.xml_path, 0, "the moving blocks hold " + std::to_string(s.moving_pos0.size()) +
                         " particles but nmoving is " + std::to_string(c.nmoving));
     s.motion_objects = std::uint32_t(c.motion.objects.size());
+    s.solid = makeSolidSetup(c);
     return s;
 }
 
@@ -169,10 +166,17 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
     sum_.options = describePhysics(c.params, c.constants.dimensions, o.cell_div);
+    sum_.bonds = setup_.solid.bonds;
+    sum_.clamp_bonds = setup_.solid.clamp_bonds;
+    if (!setup_.solid.empty()) {
+        for (const std::string& l : setup_.solid.body_lines) log_ << "  " << l << "\n";
+        log_ << "  VCPM sub-step " << setup_.solid.dt << " s (VcpmDtCoef " << c.params.vcpm_dt_coef
+             << "), " << setup_.solid.bonds << " bonds, " << setup_.solid.clamp_bonds << " clamp bonds, "
+             << setup_.solid.nclamp << " clamp nodes" << (c.nfluid == 0 ? "; no fluid: solid only" : "") << "\n";
+    }
 }
 
-void Simulation::placeMoving(double time, double interval) {
-    if (setup_.nmoving == 0) return;
+std::vector<physics::RigidMotionGpu> Simulation::motionsOver(double time, double interval) const {
     std::vector<physics::RigidMotionGpu> m(case_.motion.objects.size());
     for (std::size_t o = 0; o < m.size(); ++o) {
         const RigidTransform a = motionTransformAt(case_.motion.objects[o], time);
@@ -187,7 +191,37 @@ void Simulation::placeMoving(double time, double interval) {
         }
         m[o].inv_dt = 1.0 / interval;
     }
-    backend_->applyMotion(m);
+    return m;
+}
+
+void Simulation::placeMoving(double time, double interval) {
+    if (setup_.nmoving == 0) return;
+    backend_->applyMotion(motionsOver(time, interval));
+}
+
+std::uint64_t Simulation::brokenBonds(const HostState& st) const {
+    const SolidSetup& so = setup_.solid;
+    std::uint64_t solid_slots = 0, clamp = 0;
+    for (std::size_t k = 0; k < st.bond_broken.size(); ++k)
+        if (st.bond_broken[k]) ((so.flags[k] & physics::kBondClamp) ? clamp : solid_slots) += 1;
+    return solid_slots / 2 + clamp;
+}
+
+void Simulation::solidOnlySteps(double time, long long n, double dt) {
+    while (n > 0) {
+        const int chunk = int(std::min<long long>(n, 1 << 30));
+        backend_->solidSteps(dt, chunk, motionsOver(time, dt * chunk));
+        time += dt * chunk;
+        n -= chunk;
+    }
+}
+
+void Simulation::advanceSolid(double time, double dt_fluid) {
+    if (setup_.solid.empty()) return;
+    const int omega = physics::solidSubsteps(dt_fluid, setup_.solid.dt);
+    backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid));
+    sum_.solid_substeps += omega;
+    sum_.omega_max = std::max(sum_.omega_max, omega);
 }
 
 double Simulation::limitDt(double dt) {
@@ -201,6 +235,40 @@ double Simulation::limitDt(double dt) {
         return dtmin;
     }
     return dt;
+}
+
+void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
+                             std::vector<std::uint8_t>& broken) const {
+    const SolidSetup& so = setup_.solid;
+    const std::size_t np = st.pos.size();
+    disp.assign(3 * np, 0.f);
+    strain.assign(np, 0.f);
+    broken.assign(np, 0);
+    for (std::uint32_t r = 0; r < so.nsolid; ++r) {
+        const std::uint32_t id = so.first_solid + r;
+        const physics::Double3 p = st.pos[id];
+        const Vec3d p0 = case_.particles.pos[id];
+        disp[3 * id] = float(p.x - p0.x);
+        disp[3 * id + 1] = float(p.y - p0.y);
+        disp[3 * id + 2] = float(p.z - p0.z);
+        double sum = 0;
+        int intact = 0, nbroken = 0;
+        for (int q = 0; q < so.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * so.nsolid + r;
+            if (st.bond_broken[k]) {
+                ++nbroken;
+                continue;
+            }
+            const std::uint32_t j = (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]]
+                                                                         : so.first_solid + so.partner[k];
+            double dx, dy, dz;
+            const double len = physics::bondVector(p, st.pos[j], dx, dy, dz);
+            sum += (len - so.rest[k]) / so.rest[k];
+            ++intact;
+        }
+        strain[id] = intact > 0 ? float(sum / intact) : 0.f;
+        broken[id] = std::uint8_t(nbroken);
+    }
 }
 
 void Simulation::output(double time, long long step) {
@@ -223,8 +291,16 @@ void Simulation::output(double time, long long step) {
         press[i] = physics::taitPressure7(rhop[i], b, ovrho0);
         type[i] = std::uint8_t(case_.particles.type[i]);
     }
+    std::vector<float> disp, strain;
+    std::vector<std::uint8_t> broken;
+    if (!setup_.solid.empty()) solidFields(st, disp, strain, broken);
     if (opt_.save_h5) {
         io::PartFrame f;
+        if (!disp.empty()) {
+            f.disp = disp.data();
+            f.strain = strain.data();
+            f.broken = broken.data();
+        }
         f.index = out_index_;
         f.time = time;
         f.step = step;
@@ -238,7 +314,7 @@ void Simulation::output(double time, long long step) {
         f.mk = case_.particles.mk.data();
         f.excluded = st.excl.data();
         const std::string rel = io::writePartH5(opt_.outdir, f);
-        out_->xdmf.add(rel, time, np);
+        out_->xdmf.add(rel, time, np, !disp.empty());
     }
     if (opt_.save_vtk) {
         ParticleSet p = case_.particles;
@@ -250,8 +326,17 @@ void Simulation::output(double time, long long step) {
         char name[64];
         std::snprintf(name, sizeof name, "part_%04d.vtu", out_index_);
         fs::create_directories(fs::path(opt_.outdir) / "vtk");
-        io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p,
-                          {{"press", press}, {"excluded", st.excl}});
+        std::vector<io::VtuExtraArray> extra = {{"press", press}, {"excluded", st.excl}};
+        if (!disp.empty()) {
+            std::vector<float> dmag(np);
+            for (std::size_t i = 0; i < np; ++i)
+                dmag[i] = std::sqrt(disp[3 * i] * disp[3 * i] + disp[3 * i + 1] * disp[3 * i + 1] +
+                                    disp[3 * i + 2] * disp[3 * i + 2]);
+            extra.push_back({"disp", dmag});
+            extra.push_back({"strain", strain});
+            extra.push_back({"broken", broken});
+        }
+        io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
     }
     ++out_index_;
     sum_.outputs = out_index_;
@@ -272,7 +357,12 @@ RunSummary Simulation::run() {
 
     // SEASPRING_TIMERS=1: wall time per phase (synchronising the device after each phase).
     const bool timers = std::getenv("SEASPRING_TIMERS") != nullptr;
-    double t_divide = 0, t_forces = 0, t_integrate = 0, t_other = 0;
+    double t_divide = 0, t_forces = 0, t_integrate = 0, t_other = 0, t_solid = 0;
+    const bool solids = !setup_.solid.empty();
+    const bool solid_only = solids && case_.nfluid == 0;
+    const double solid_dt = p.dt_fixed > 0 && solid_only ? std::min(p.dt_fixed, setup_.solid.dt) : setup_.solid.dt;
+    bool clamp_moves = false;
+    for (std::int16_t o : setup_.solid.clamp_object) clamp_moves = clamp_moves || o >= 0;
     auto phase = [&](double& acc, auto&& fn) {
         if (!timers) return fn();
         const auto a = Clock::now();
@@ -300,12 +390,25 @@ RunSummary Simulation::run() {
             break;
         }
         double dt;
+        if (solid_only) {
+            // No fluid: the solid advances by its own sub-step, in chunks up to the next output
+            // (one sub-step per chunk when a clamp moves, so that it follows its motion law).
+            dt = solid_dt;
+            long long n = std::max(1LL, (long long)std::ceil((std::min(next_out, tmax) - t) / dt - 1e-9));
+            if (clamp_moves) n = 1;
+            if (max_steps >= 0) n = std::min(n, max_steps - step);
+            phase(t_integrate, [&] { solidOnlySteps(t, n, dt); return 0; });
+            t += double(n) * dt;
+            step += n;
+            placeMoving(t, dt);
+        } else {
         if (symplectic) {
             dt = p.dt_fixed > 0 ? p.dt_fixed : dt_next;
             const double dtp = limitDt(physics::variableDt(forces(), h, cs0, cfl));
             predictor(dt);
             divide();
             const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+            if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
             corrector(dt);
             dt_next = std::min(dtp, dtc);
         } else {
@@ -313,9 +416,11 @@ RunSummary Simulation::run() {
             dt = p.dt_fixed > 0 ? p.dt_fixed : dtv;
             const bool euler = ++verlet_count >= p.verlet_steps;
             if (euler) verlet_count = 0;
+            if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
             verlet(dt, euler);
             dt_prev = dt;
         }
+        if (solids) phase(t_solid, [&] { advanceSolid(t, dt); return 0; });
         t += dt;
         ++step;
         // Moving boundaries: pose at t, velocity over the coming step (its dt when known).
@@ -324,6 +429,7 @@ RunSummary Simulation::run() {
             return 0;
         });
         divide();
+        }
         sum_.dt_last = dt;
         const std::uint32_t active = backend_->activeFluid();
         if (!warned_out && case_.nfluid > 0 &&
@@ -359,8 +465,9 @@ RunSummary Simulation::run() {
     if (timers && step > 0) {
         char line[256];
         std::snprintf(line, sizeof line,
-                      "phase times per step [ms]: divide %.3f  forces %.3f  integrate %.3f  motion %.3f\n",
-                      1e3 * t_divide / step, 1e3 * t_forces / step, 1e3 * t_integrate / step, 1e3 * t_other / step);
+                      "phase times per step [ms]: divide %.3f  forces %.3f  integrate %.3f  motion %.3f  solid %.3f\n",
+                      1e3 * t_divide / step, 1e3 * t_forces / step, 1e3 * t_integrate / step, 1e3 * t_other / step,
+                      1e3 * t_solid / step);
         log_ << line;
     }
     if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
@@ -377,6 +484,13 @@ RunSummary Simulation::run() {
     sum_.loop_time = seconds(t_loop, t_end_loop);
     sum_.wall_time = seconds(t_start, Clock::now());
     sum_.ns_per_particle_step = step > 0 ? sum_.loop_time * 1e9 / (double(step) * double(sum_.np)) : 0;
+    if (solids) {
+        if (solid_only) sum_.solid_substeps = step;
+        sum_.solid_dt = setup_.solid.dt;
+        sum_.broken_bonds = brokenBonds(final_);
+        if (solid_only && step > 0)
+            sum_.ns_per_particle_step = sum_.loop_time * 1e9 / (double(step) * double(setup_.solid.nsolid));
+    }
     return sum_;
 }
 

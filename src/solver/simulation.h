@@ -9,6 +9,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "solver/backend.h"
 #include "solver/run_options.h"
@@ -32,6 +33,11 @@ struct RunSummary {
     std::string stop_reason;
     std::string state_hash;
     std::string options;  ///< physics options, one line
+    // VCPM solids
+    long long solid_substeps = 0;   ///< solid sub-steps done
+    int omega_max = 0;              ///< most sub-steps in one fluid step
+    double solid_dt = 0;            ///< the solid sub-step limit VcpmDtCoef dp / c_S [s]
+    std::uint64_t bonds = 0, clamp_bonds = 0, broken_bonds = 0;  ///< bonds counted once
 };
 
 /// Builds the backend's initial data from the case (particles in id order).
@@ -52,7 +58,18 @@ public:
 
 private:
     void output(double time, long long step);
+    /// Per-particle solid fields of the part files (zero for other particles).
+    void solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
+                     std::vector<std::uint8_t>& broken) const;
     void placeMoving(double time, double interval);
+    /// Motion objects' poses at `time` and `time + interval`.
+    std::vector<physics::RigidMotionGpu> motionsOver(double time, double interval) const;
+    /// The solid sub-cycle of one fluid step [time, time + dt_fluid] (no-op without solids).
+    void advanceSolid(double time, double dt_fluid);
+    /// Solid-only cases: `n` solid sub-steps from `time`.
+    void solidOnlySteps(double time, long long n, double dt);
+    /// Broken bonds (each solid-solid bond counted once) in `st`.
+    std::uint64_t brokenBonds(const HostState& st) const;
     double limitDt(double dt);
 
     const SolverCase& case_;

@@ -155,6 +155,8 @@ SolverParameters readParameters(const ParameterTable& t) {
     t.requireNone("DtFixedFile", "a dt file");
     p.dt_all_particles = t.choice("DtAllParticles", {0}, "0, dt from the fluid particles") != 0;
     p.time_max = t.atLeast("TimeMax", 0, false);
+    p.vcpm_dt_coef = t.atLeast("VcpmDtCoef", 0, false);
+    if (p.vcpm_dt_coef > 2) t.fail("VcpmDtCoef", "must be <= 2 (the lattice is unstable far below that; 0.8 is safe for nu >= 0)");
     p.time_out = t.atLeast("TimeOut", 0, false);
     if (t.number("TimeOutExtra") > 0)
         t.fail("TimeOutExtra",
@@ -349,7 +351,51 @@ void checkSolids(const XmlSource& src, pugi::xml_node exec, SolverCase& c,
                     std::to_string(h5.bonds.first_solid) + " but the solid block starts at " +
                     std::to_string(c.nfixed + c.nmoving));
     for (pugi::xml_node s : v.children("solid")) {
-        (void)s;
+        src.checkAttributes(s, {"mkbound", "mk", "mkclamp", "density", "youngmod", "poissratio",
+                                "critstretch", "damping", "declaredin", "particles"});
+        SolidBody b;
+        b.line = src.lineOf(s);
+        auto number = [&](const char* attr) {
+            try {
+                return gencase::parseNumber(src.text(s, attr));
+            } catch (const std::exception& e) {
+                src.fail(s, std::string(attr) + "=\"" + s.attribute(attr).value() + "\": " + e.what());
+            }
+        };
+        b.mkbound = int(count(src, s, "mkbound", 65535));
+        b.mk = std::uint16_t(count(src, s, "mk", 65535));
+        b.density = number("density");
+        b.youngmod = number("youngmod");
+        b.poissratio = number("poissratio");
+        b.critstretch = number("critstretch");
+        b.damping = number("damping");
+        if (!(b.density > 0)) src.fail(s, "density=\"" + num(b.density) + "\": must be > 0 [kg/m^3]");
+        if (!(b.youngmod > 0)) src.fail(s, "youngmod=\"" + num(b.youngmod) + "\": must be > 0 [Pa]");
+        if (!(b.poissratio > -1 && b.poissratio < 0.5))
+            src.fail(s, "poissratio=\"" + num(b.poissratio) + "\": must lie in (-1, 0.5)");
+        if (!(b.critstretch >= 0)) src.fail(s, "critstretch=\"" + num(b.critstretch) + "\": must be >= 0");
+        if (!(b.damping >= 0)) src.fail(s, "damping=\"" + num(b.damping) + "\": must be >= 0");
+        const std::string clamps = s.attribute("mkclamp").value();
+        std::size_t from = 0;
+        while (from < clamps.size()) {
+            const std::size_t comma = clamps.find(',', from);
+            const std::string item = clamps.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+            char* end = nullptr;
+            const long mkb = std::strtol(item.c_str(), &end, 10);
+            if (item.empty() || *end != '\0' || mkb < 0)
+                src.fail(s, "mkclamp=\"" + clamps + "\": expected mkbound numbers separated by commas");
+            bool found = false;
+            for (const MkBlock& blk : c.blocks)
+                if ((blk.type == ParticleType::Fixed || blk.type == ParticleType::Moving) && blk.mk_local == mkb) {
+                    b.clamp_mk.push_back(std::uint16_t(blk.mk));
+                    found = true;
+                }
+            if (!found)
+                src.fail(s, "mkclamp=\"" + clamps + "\": mkbound " + item + " has no fixed or moving particle block");
+            if (comma == std::string::npos) break;
+            from = comma + 1;
+        }
+        c.solids.push_back(b);
         ++c.solid_bodies;
     }
     c.bonds = h5.bonds;

@@ -54,6 +54,19 @@ struct SolverParameters {
     double min_fluid_stop = 0;  ///< stop when active fluid < this fraction (0 = never)
     double wrn_parts_out = 1;   ///< warn when more than this % of the fluid is excluded
     double cfl_number = 0.2;    ///< from <constants><cflnumber>
+    double vcpm_dt_coef = 0.8;  ///< VCPM sub-step = this * dp / c_S (SeaSpring's VcpmDtCoef)
+};
+
+/// One `<vcpmsolids><solid>` body of the resolved case: a boundary MK modelled as a VCPM
+/// lattice solid, its material and its clamps.
+struct SolidBody {
+    int mkbound = 0;
+    std::uint16_t mk = 0;                 ///< global MK of its particles
+    std::vector<std::uint16_t> clamp_mk;  ///< global MKs of its clamp boundaries
+    double density = 0, youngmod = 0, poissratio = 0;  ///< [kg/m^3], [Pa], [-]
+    double critstretch = 0;               ///< relative bond elongation at breakage (0: never)
+    double damping = 0;                   ///< multiplies sqrt(E/(rho dp^2)) (0: none)
+    int line = 0;                         ///< line in the resolved XML
 };
 
 struct SolverCase {
@@ -68,6 +81,7 @@ struct SolverCase {
     ParticleSet particles;             ///< id order
     std::optional<BondNetwork> bonds;  ///< only when the case has solids
     std::uint32_t solid_bodies = 0;    ///< <solid> entries of the resolved <vcpmsolids>
+    std::vector<SolidBody> solids;     ///< the same entries, in file order
     std::vector<std::string> notes;    ///< "FILE:LINE: ..." for sections read but not used
 };
 

@@ -29,6 +29,13 @@ std::uint64_t stateHash(const HostState& s) {
         mix(h, v, sizeof v);
         mix(h, &s.excl[i], 1);
     }
+    // VCPM solids (absent without solids, so fluid-only hashes are unchanged): the
+    // double-precision velocities and every bond's state.
+    for (const physics::Double3& v : s.solid_vel) {
+        const double d[3] = {v.x, v.y, v.z};
+        mix(h, d, sizeof d);
+    }
+    if (!s.bond_broken.empty()) mix(h, s.bond_broken.data(), s.bond_broken.size());
     return h;
 }
 

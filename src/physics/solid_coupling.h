@@ -1,0 +1,105 @@
+// SeaSpring — MIT licence.
+/// \file solid_coupling.h
+/// \brief Fluid-solid coupling of the VCPM solids (seed paper 000 §2.3): solid particles are
+///        DBC boundary particles for the fluid, and each feels the exact opposite of the pressure
+///        and viscous terms it exerts on its fluid neighbours (Eq. 16), gathered per solid
+///        particle. Also the per-particle copies between the solid arrays (solid-index order)
+///        and the cell-sorted boundary block.
+#pragma once
+
+#include <cstdint>
+
+#include "physics/fluid_interaction.h"
+#include "physics/vcpm.h"
+
+namespace seaspring::physics {
+
+/// The hydrodynamic force on boundary particle i (sorted index; normally a solid particle):
+/// F = -sum_j m_j a_j<-i over its fluid neighbours j, where a_j<-i is the acceleration term that
+/// fluid particle j received from i in the same force evaluation. Each pair's offset and terms
+/// are computed exactly as fluid particle j computes them (its own row frame and cell), so every
+/// pair contributes the same bits with the opposite sign: action = -reaction up to the rounding
+/// of the two sums.
+template <class Opt>
+SEASPRING_HD inline Double3 hydroForceOnBoundary(std::uint32_t i, const InteractionInputs& in,
+                                                 const FluidConstants& c, const CellGrid& g) {
+    const Float4 psb = in.poscell[i];
+    const SearchBox box = searchBox<Opt::dim>(psb, g);
+    const int cby = Opt::dim == 3 ? packedCellY(g, psb.w) : 0;
+    const int cbz = packedCellZ(g, psb.w);
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float gz = cellGap(z - box.caz, psb.z, g.cellsizef, box.margin);
+        for (int y = box.y0; y <= box.y1; ++y) {
+            std::uint32_t pb, pe;
+            if (!rowCandidates<Opt::dim>(box, psb, y, z, gz, in.cell_start_fluid, c, g, pb, pe)) continue;
+            for (std::uint32_t j = pb; j < pe; ++j) {
+                const Float4 psa = in.poscell[j];
+                // Fluid particle j's frame for the row holding i: as in fluidPairsInBlock.
+                const int caxj = packedCellX(g, psa.w);
+                const float rowdy = Opt::dim == 3 ? g.cellsizef * float(packedCellY(g, psa.w) - cby) : 0.f;
+                const float rowdz = g.cellsizef * float(packedCellZ(g, psa.w) - cbz);
+                float drx, dry, drz;
+                const float rr2 = pairOffset<Opt::dim>(rowFrame(psa, rowdy, rowdz), psb, caxj, g, drx, dry, drz);
+                if (!isNeighbour(rr2, c)) continue;
+                const Float4 va = in.velrho[j];
+                const Float2 pa2 = in.press_ovrho[j];
+                SymTensor taua{0, 0, 0, 0, 0, 0};
+                if (Opt::sps) taua = in.tau[j];
+                const PairTerms t = fluidPairTerms<Opt, true>(i, drx, dry, drz, rr2, va, pa2.y, pa2.x, taua, in, c);
+                float ax = t.cf * t.frx, ay = t.cf * t.fry, az = t.cf * t.frz;
+                if (Opt::visco != Viscosity::Artificial) {
+                    ax = fma32(t.cv, t.dvx, ax);
+                    ay = fma32(t.cv, t.dvy, ay);
+                    az = fma32(t.cv, t.dvz, az);
+                    if (Opt::sps) {
+                        ax += t.sx;
+                        ay += t.sy;
+                        az += t.sz;
+                    }
+                }
+                fx -= double(ax);
+                fy -= double(ay);
+                fz -= double(az);
+            }
+        }
+    }
+    const double m = double(c.massfluid);
+    return Double3{m * fx, m * fy, m * fz};
+}
+
+/// Sorted boundary index i: if it holds solid particle s (id in [first, first + n)), writes
+/// slot[s] = i (integer, one writer per entry).
+SEASPRING_HD inline void solidSlotAt(std::uint32_t i, const std::uint32_t* id, std::uint32_t first, std::uint32_t n,
+                                     std::uint32_t* slot) {
+    const std::uint32_t s = id[i] - first;
+    if (id[i] >= first && s < n) slot[s] = i;
+}
+
+/// Copies the solid's position and velocity into the boundary block (sorted index of solid s).
+SEASPRING_HD inline void solidToBoundaryAt(std::uint32_t s, const std::uint32_t* slot, const Double3* pos,
+                                           const Double3* vel, Double3* bpos, Float4* bvelrho) {
+    const std::uint32_t i = slot[s];
+    bpos[i] = pos[s];
+    const Double3 v = vel[s];
+    bvelrho[i].x = float(v.x);
+    bvelrho[i].y = float(v.y);
+    bvelrho[i].z = float(v.z);
+}
+
+/// Clamp node c's positions at the start and the end of a solid interval: its boundary
+/// particle's initial position moved by its motion object (or fixed when object < 0).
+SEASPRING_HD inline void clampMotionAt(std::uint32_t c, const Double3* pos_initial, const std::int16_t* object,
+                                       const RigidMotionGpu* motions, Double3* pos_start, Double3* pos_end) {
+    const Double3 p = pos_initial[c];
+    if (object[c] < 0) {
+        pos_start[c] = p;
+        pos_end[c] = p;
+        return;
+    }
+    const RigidMotionGpu& m = motions[object[c]];
+    pos_start[c] = applyRigid(m.r, m.t, p);
+    pos_end[c] = applyRigid(m.r_next, m.t_next, p);
+}
+
+}  // namespace seaspring::physics

@@ -1,0 +1,273 @@
+// SeaSpring — MIT licence.
+/// \file vcpm.h
+/// \brief The VCPM lattice solid (volume-compensated particle method, Chen & Liu 2016; seed
+///        paper 000 §2): material constants, bond half-elongation, the per-particle volumetric
+///        sum, the bond force, breakage, and the symplectic sub-step (Eqs. 20-23). One source for
+///        the OpenMP loops (src/cpu/cpu_solid.cpp) and the CUDA kernels (src/cuda/cuda_solid.cu).
+///
+/// Energy of the lattice (each bond seen from both ends, delta_l = half the elongation):
+///   U = sum_I [ 1/2 sum_J k_IJ dl_IJ^2 + 1/2 T (sum_J dl_IJ)^2 ]
+/// so the force on I along u_IJ = (r_I - r_J)/|r_I - r_J| is
+///   f_IJ = -k_IJ dl_IJ - T/2 (S_I + S_J),   S_I = sum_Q dl_IQ   (Eq. 13).
+/// 3D simple cubic lattice (6 first + 12 second neighbours), R = dp/2 (Eqs. 8-9):
+///   k = 2RE/(1+nu) for both shells,  T = RE(4nu-1)/((9+4 sqrt2)(1+nu)(1-2nu)).
+/// 2D square lattice (4 + 4 neighbours, plane strain, per unit thickness), derived in
+/// docs/vcpm.md by matching the Cauchy-Born energy to isotropic elasticity:
+///   k1 = 4 mu = 2E/(1+nu),  k2 = 2 mu = E/(1+nu),
+///   T = E(4nu-1) / (2 (3+2 sqrt2) (1+nu)(1-2nu)).
+/// All solid arithmetic is double: elongations of stiff materials are far below float
+/// resolution of the positions. Only IEEE +,-,*,/ and sqrt are used (correctly rounded on both
+/// backends), so the CPU and the GPU give the same bits.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/host_device.h"
+#include "physics/sph_types.h"
+
+namespace seaspring::physics {
+
+/// Bond slots per particle: 18 in 3D (6 + 12), 8 in 2D (4 + 4).
+constexpr int kMaxBonds3D = 18;
+constexpr int kMaxBonds2D = 8;
+
+/// Bond flags in SolidBonds::flags (the kind bits are gencase's BondKind values).
+enum VcpmBondFlag : std::uint8_t {
+    kBondSecond = 1,  ///< second neighbour (rest length sqrt(2) dp)
+    kBondClamp = 2,   ///< the partner is a clamp node (boundary particle), not a solid particle
+};
+
+/// Constants of one solid body, as used per bond and per particle.
+struct VcpmMaterial {
+    double k_first = 0;   ///< normal stiffness of first-neighbour bonds [N/m] (2D: per m of thickness)
+    double k_second = 0;  ///< of second-neighbour bonds
+    double t_half = 0;    ///< T/2, volumetric (non-local) parameter
+    double inv_mass = 0;  ///< 1 / (rho_S dp^D)
+    double damp_rate = 0; ///< c_d [1/s]: damping force -m c_d v (Eq. 11; 0 = none)
+    double crit_stretch = 0;  ///< a bond breaks when (|r|-L0)/L0 > this; <= 0: never
+};
+
+/// Elastic and time-step properties of a material (host).
+struct VcpmElastic {
+    double shear = 0;     ///< G = E / (2(1+nu))
+    double bulk = 0;      ///< K = E / (3(1-2nu))
+    double lame = 0;      ///< lambda = E nu / ((1+nu)(1-2nu))
+    double wave_speed = 0;///< P-wave speed c_S = sqrt((K + 4G/3)/rho) [m/s]
+};
+
+inline VcpmElastic vcpmElastic(double young, double poisson, double density) {
+    VcpmElastic e;
+    e.shear = young / (2.0 * (1.0 + poisson));
+    e.bulk = young / (3.0 * (1.0 - 2.0 * poisson));
+    e.lame = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+    e.wave_speed = std::sqrt((e.bulk + 4.0 * e.shear / 3.0) / density);
+    return e;
+}
+
+/// Host: the constants of a body of density rho, Young's modulus E, Poisson's ratio nu on a
+/// lattice of spacing dp (dim 2 or 3); `damping` multiplies sqrt(E/(rho dp^2)).
+inline VcpmMaterial vcpmMaterial(int dim, double young, double poisson, double density, double dp,
+                                 double damping, double crit_stretch) {
+    const double sqrt2 = std::sqrt(2.0);
+    VcpmMaterial m;
+    const double denom = (1.0 + poisson) * (1.0 - 2.0 * poisson);
+    if (dim == 3) {
+        const double r = 0.5 * dp;
+        m.k_first = 2.0 * r * young / (1.0 + poisson);
+        m.k_second = m.k_first;
+        m.t_half = 0.5 * r * young * (4.0 * poisson - 1.0) / ((9.0 + 4.0 * sqrt2) * denom);
+        m.inv_mass = 1.0 / (density * dp * dp * dp);
+    } else {
+        m.k_first = 2.0 * young / (1.0 + poisson);
+        m.k_second = young / (1.0 + poisson);
+        m.t_half = 0.5 * young * (4.0 * poisson - 1.0) / (2.0 * (3.0 + 2.0 * sqrt2) * denom);
+        m.inv_mass = 1.0 / (density * dp * dp);
+    }
+    m.damp_rate = damping * std::sqrt(young / (density * dp * dp));
+    m.crit_stretch = crit_stretch;
+    return m;
+}
+
+/// Bonds of the solid particles in a padded, slot-major layout: slot q of particle s is at
+/// q * n + s (coalesced on the GPU), q < count[s], in gencase's fixed lattice-offset order.
+/// `partner` is a solid index, or a clamp-node index when the slot's flags hold kBondClamp.
+struct SolidBonds {
+    std::uint32_t n = 0;                  ///< solid particles
+    const std::uint8_t* count = nullptr;  ///< [n]
+    const std::uint32_t* partner = nullptr;
+    const double* rest = nullptr;         ///< rest length L0 [m]
+    const std::uint8_t* flags = nullptr;  ///< VcpmBondFlag
+    std::uint8_t* broken = nullptr;       ///< 1 once the bond has broken (never heals)
+};
+
+/// Clamp nodes: the boundary particles that clamp bonds reach. Their positions are prescribed
+/// (fixed, or moving with their boundary); their volumetric sums S come from their clamp bonds,
+/// so a clamp node behaves as a lattice site with a prescribed displacement. Slot layout as in
+/// SolidBonds; `slot` is the index of the same bond in SolidBonds (to read its state).
+struct ClampNodes {
+    std::uint32_t n = 0;
+    const std::uint8_t* count = nullptr;
+    const std::uint32_t* partner = nullptr;  ///< solid index
+    const std::uint32_t* slot = nullptr;     ///< bond slot in SolidBonds
+    const Double3* pos_start = nullptr;      ///< position at the start of the solid interval
+    const Double3* pos_end = nullptr;        ///< position at its end
+    double* sum = nullptr;                   ///< S of each node
+};
+
+/// Position of clamp node c at fraction f in [0, 1] of the solid interval (linear in time,
+/// matching the constant velocity the fluid sees over a step).
+SEASPRING_HD inline Double3 clampPosAt(const ClampNodes& cn, std::uint32_t c, double f) {
+    const Double3 a = cn.pos_start[c], b = cn.pos_end[c];
+    return Double3{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), a.z + f * (b.z - a.z)};
+}
+
+/// r_a - r_b and its length (the same bits from either end: the difference is negated exactly).
+SEASPRING_HD inline double bondVector(const Double3& a, const Double3& b, double& dx, double& dy, double& dz) {
+    dx = a.x - b.x;
+    dy = a.y - b.y;
+    dz = a.z - b.z;
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/// Half the bond elongation, dl = (|r| - L0) / 2.
+SEASPRING_HD inline double halfElongation(double len, double rest) { return 0.5 * (len - rest); }
+
+/// True once a bond of length `len` and rest length `rest` is stretched past the critical
+/// stretch (never in compression; crit <= 0 disables breakage).
+SEASPRING_HD inline bool bondBreaks(double len, double rest, double crit) {
+    return crit > 0.0 && len - rest > crit * rest;
+}
+
+/// Magnitude of the force on I along u_IJ (Eq. 13).
+SEASPRING_HD inline double bondForce(double k, double t_half, double dl, double sum_i, double sum_j) {
+    return -k * dl - t_half * (sum_i + sum_j);
+}
+
+/// Solid state (solid-index order). A sub-step evaluates forces at `pos` (predictor) and at
+/// `pos_half` (corrector); each pass reads one position array and writes another, so no
+/// particle reads a position that another thread of the same pass writes.
+struct SolidState {
+    Double3* pos = nullptr;        ///< r^m; receives r^{m+1}
+    Double3* pos_half = nullptr;   ///< r^{m+1/2}
+    Double3* vel = nullptr;        ///< v^m, then v^{m+1/2}, then v^{m+1}
+    Double3* vel0 = nullptr;       ///< v^m during the sub-step
+    double* sum = nullptr;         ///< S of each particle (this evaluation)
+    const Double3* fluid_force = nullptr;  ///< hydrodynamic force F_F->S, frozen over the sub-cycle [N]
+    const std::uint16_t* body = nullptr;   ///< material index
+    const VcpmMaterial* material = nullptr;
+};
+
+/// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
+/// its bonds (the partner decides the mirror slot with the same bits) and returns
+/// S_s = sum of dl over its intact bonds. `f`: time fraction for the clamp nodes.
+SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st,
+                                      const SolidBonds& b, const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const double crit = st.material[st.body[s]].crit_stretch;
+    const int nb = b.count[s];
+    double sum = 0.0;
+    for (int q = 0; q < nb; ++q) {
+        const std::uint32_t k = std::uint32_t(q) * b.n + s;
+        const std::uint32_t j = b.partner[k];
+        const Double3 pj = (b.flags[k] & kBondClamp) ? clampPosAt(cn, j, f) : ep[j];
+        double dx, dy, dz;
+        const double len = bondVector(p, pj, dx, dy, dz);
+        const double rest = b.rest[k];
+        std::uint8_t br = b.broken[k];
+        if (!br && bondBreaks(len, rest, crit)) {
+            br = 1;
+            b.broken[k] = 1;
+        }
+        sum += br ? 0.0 : halfElongation(len, rest);
+    }
+    return sum;
+}
+
+/// Pass 1b, for clamp node c (after pass 1 decided the states): S_c over its intact bonds.
+SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const SolidBonds& b,
+                                      const ClampNodes& cn, double f) {
+    const Double3 p = clampPosAt(cn, c, f);
+    const int nb = cn.count[c];
+    double sum = 0.0;
+    for (int q = 0; q < nb; ++q) {
+        const std::uint32_t k = std::uint32_t(q) * cn.n + c;
+        const std::uint32_t slot = cn.slot[k];
+        if (b.broken[slot]) continue;
+        double dx, dy, dz;
+        const double len = bondVector(p, ep[cn.partner[k]], dx, dy, dz);
+        sum += halfElongation(len, b.rest[slot]);
+    }
+    return sum;
+}
+
+/// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12), from the
+/// sums of pass 1.
+SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
+                                             const SolidBonds& b, const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const VcpmMaterial& m = st.material[st.body[s]];
+    const double sum_s = st.sum[s];
+    const int nb = b.count[s];
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    for (int q = 0; q < nb; ++q) {
+        const std::uint32_t k = std::uint32_t(q) * b.n + s;
+        if (b.broken[k]) continue;
+        const std::uint32_t j = b.partner[k];
+        const bool clamp = (b.flags[k] & kBondClamp) != 0;
+        const Double3 pj = clamp ? clampPosAt(cn, j, f) : ep[j];
+        const double sum_j = clamp ? cn.sum[j] : st.sum[j];
+        double dx, dy, dz;
+        const double len = bondVector(p, pj, dx, dy, dz);
+        const double kk = (b.flags[k] & kBondSecond) ? m.k_second : m.k_first;
+        const double fm = bondForce(kk, m.t_half, halfElongation(len, b.rest[k]), sum_s, sum_j) / len;
+        fx += fm * dx;
+        fy += fm * dy;
+        fz += fm * dz;
+    }
+    return Double3{fx, fy, fz};
+}
+
+/// Acceleration of a solid particle: (bond force + hydrodynamic force)/m + g - c_d v.
+SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double3& ffluid, const Double3& vel,
+                                              const VcpmMaterial& m, double gx, double gy, double gz) {
+    return Double3{(fbond.x + ffluid.x) * m.inv_mass + gx - m.damp_rate * vel.x,
+                   (fbond.y + ffluid.y) * m.inv_mass + gy - m.damp_rate * vel.y,
+                   (fbond.z + ffluid.z) * m.inv_mass + gz - m.damp_rate * vel.z};
+}
+
+/// Predictor pass of a sub-step (Eqs. 20-21) for particle s: a^m at r^m, then
+/// v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
+SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
+    const Double3 fb = solidBondForceAt(s, st.pos, st, b, cn, f);
+    const Double3 v = st.vel[s], p = st.pos[s];
+    const Double3 a = solidAcceleration(fb, st.fluid_force[s], v, st.material[st.body[s]], gx, gy, gz);
+    const double dth = 0.5 * dt;
+    st.vel0[s] = v;
+    st.vel[s] = Double3{v.x + dth * a.x, v.y + dth * a.y, v.z + dth * a.z};
+    st.pos_half[s] = Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
+}
+
+/// Corrector pass (Eqs. 22-23): a^{m+1/2} at r^{m+1/2} (damping with v^{m+1/2}), then
+/// v^{m+1} = v^m + dt a^{m+1/2} and r^{m+1} = r^m + dt/2 (v^m + v^{m+1}).
+SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
+    const Double3 fb = solidBondForceAt(s, st.pos_half, st, b, cn, f);
+    const Double3 a = solidAcceleration(fb, st.fluid_force[s], st.vel[s], st.material[st.body[s]], gx, gy, gz);
+    const Double3 v0 = st.vel0[s], p0 = st.pos[s];
+    const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};
+    const double dth = 0.5 * dt;
+    st.vel[s] = v;
+    st.pos[s] = Double3{p0.x + dth * (v0.x + v.x), p0.y + dth * (v0.y + v.y), p0.z + dth * (v0.z + v.z)};
+}
+
+/// Number of solid sub-steps for a fluid step dt_f (Section 2.4.1): int(dt_f / dt_s) + 1.
+inline int solidSubsteps(double dt_fluid, double dt_solid) {
+    const double r = dt_fluid / dt_solid;
+    return r >= 1e9 ? 1000000000 : int(r) + 1;
+}
+
+}  // namespace seaspring::physics

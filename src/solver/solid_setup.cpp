@@ -1,0 +1,154 @@
+// SeaSpring — MIT licence.
+/// \file solid_setup.cpp
+#include "solver/solid_setup.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include "core/error.h"
+#include "solver/solver_case.h"
+
+namespace seaspring::solver {
+
+namespace {
+std::string fmtg(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+}
+}  // namespace
+
+SolidSetup makeSolidSetup(const SolverCase& c) {
+    SolidSetup s;
+    if (c.nsolid == 0 || !c.bonds) return s;
+    const BondNetwork& net = *c.bonds;
+    const ParticleSet& ps = c.particles;
+    const int dim = c.constants.dimensions;
+    const double dp = c.constants.dp;
+    s.dim = dim;
+    s.first_solid = net.first_solid;
+    s.nsolid = c.nsolid;
+    s.max_bonds = dim == 3 ? physics::kMaxBonds3D : physics::kMaxBonds2D;
+    const std::uint32_t n = s.nsolid, first = s.first_solid;
+
+    // Materials, one per body, and the body of each particle (by global MK).
+    std::map<std::uint16_t, std::uint16_t> body_of_mk;
+    double dt = 1e300;
+    for (std::size_t b = 0; b < c.solids.size(); ++b) {
+        const SolidBody& sb = c.solids[b];
+        body_of_mk[sb.mk] = std::uint16_t(b);
+        s.materials.push_back(physics::vcpmMaterial(dim, sb.youngmod, sb.poissratio, sb.density, dp,
+                                                    sb.damping, sb.critstretch));
+        const physics::VcpmElastic el = physics::vcpmElastic(sb.youngmod, sb.poissratio, sb.density);
+        dt = std::min(dt, c.params.vcpm_dt_coef * dp / el.wave_speed);
+        s.wave_speed = std::max(s.wave_speed, el.wave_speed);
+        const physics::VcpmMaterial& m = s.materials.back();
+        s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + fmtg(sb.density) +
+                               ", E " + fmtg(sb.youngmod) + ", nu " + fmtg(sb.poissratio) + ", c_S " +
+                               fmtg(el.wave_speed) + " m/s, k " + fmtg(m.k_first) +
+                               (dim == 2 ? "/" + fmtg(m.k_second) : std::string()) + ", T " +
+                               fmtg(2 * m.t_half) + ", damping rate " + fmtg(m.damp_rate) + " 1/s" +
+                               (sb.critstretch > 0 ? ", breaks at stretch " + fmtg(sb.critstretch) : ""));
+    }
+    s.dt = dt;
+    s.body.resize(n);
+    s.pos.resize(n);
+    s.vel.resize(n);
+    s.mass.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t id = first + k;
+        const auto it = body_of_mk.find(ps.mk[id]);
+        if (it == body_of_mk.end())
+            throwInputError(c.xml_path, 0, "solid particle " + std::to_string(id) + " has MK " +
+                                               std::to_string(ps.mk[id]) + ", which no <vcpmsolids><solid> declares");
+        s.body[k] = it->second;
+        s.pos[k] = physics::Double3{ps.pos[id].x, ps.pos[id].y, ps.pos[id].z};
+        s.vel[k] = physics::Double3{ps.vel[id].x, ps.vel[id].y, ps.vel[id].z};
+        const SolidBody& sb = c.solids[it->second];
+        s.mass[k] = sb.density * dp * dp * (dim == 3 ? dp : 1.0);
+    }
+
+    // Moving boundary ids -> motion object (for clamp nodes on a moving boundary).
+    std::map<std::uint32_t, std::int16_t> object_of_id;
+    for (const MkBlock& blk : c.blocks) {
+        if (blk.type != ParticleType::Moving) continue;
+        for (std::size_t o = 0; o < c.motion.objects.size(); ++o)
+            if (c.motion.objects[o].mkbound == blk.mk_local)
+                for (std::uint32_t k = 0; k < blk.count; ++k) object_of_id[blk.begin + k] = std::int16_t(o);
+    }
+
+    // Bonds: padded slot-major; clamp partners become clamp-node indices.
+    const std::size_t slots = std::size_t(s.max_bonds) * n;
+    s.count.assign(n, 0);
+    s.partner.assign(slots, 0);
+    s.rest.assign(slots, 0.0);
+    s.flags.assign(slots, 0);
+    std::map<std::uint32_t, std::uint32_t> clamp_index;  // particle id -> clamp node
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> clamp_bonds;  // (solid, slot)
+    for (std::uint32_t r = 0; r < n; ++r) {
+        const std::uint32_t b0 = net.offset[r], b1 = net.offset[r + 1];
+        if (b1 - b0 > std::uint32_t(s.max_bonds))
+            throw Error(c.h5_path + ": solid particle " + std::to_string(first + r) + " has " +
+                        std::to_string(b1 - b0) + " bonds (at most " + std::to_string(s.max_bonds) + ")");
+        s.count[r] = std::uint8_t(b1 - b0);
+        for (std::uint32_t q = 0; q < b1 - b0; ++q) {
+            const std::uint32_t src = b0 + q;
+            const std::size_t k = std::size_t(q) * n + r;
+            const std::uint32_t j = net.neighbour[src];
+            s.rest[k] = net.rest_length[src];
+            std::uint8_t f = (net.kind[src] & BondSecond) ? physics::kBondSecond : 0;
+            if (net.kind[src] & BondClampFlag) {
+                f |= physics::kBondClamp;
+                auto it = clamp_index.find(j);
+                if (it == clamp_index.end()) {
+                    it = clamp_index.emplace(j, std::uint32_t(clamp_index.size())).first;
+                    clamp_bonds.emplace_back();
+                }
+                s.partner[k] = it->second;
+                clamp_bonds[it->second].push_back({r, std::uint32_t(k)});
+                ++s.clamp_bonds;
+            } else {
+                if (j < first || j - first >= n)
+                    throw Error(c.h5_path + ": bond of solid particle " + std::to_string(first + r) +
+                                " reaches particle " + std::to_string(j) + ", which is not a solid particle");
+                s.partner[k] = j - first;
+                if (j > first + r) ++s.bonds;
+            }
+            s.flags[k] = f;
+        }
+    }
+
+    // Clamp nodes in order of first appearance (deterministic).
+    s.nclamp = std::uint32_t(clamp_index.size());
+    for (const auto& l : clamp_bonds) s.clamp_max = std::max(s.clamp_max, int(l.size()));
+    s.clamp_count.assign(s.nclamp, 0);
+    s.clamp_partner.assign(std::size_t(s.clamp_max) * s.nclamp, 0);
+    s.clamp_slot.assign(std::size_t(s.clamp_max) * s.nclamp, 0);
+    s.clamp_id.assign(s.nclamp, 0);
+    s.clamp_pos.resize(s.nclamp);
+    s.clamp_object.assign(s.nclamp, -1);
+    for (const auto& [id, node] : clamp_index) {
+        s.clamp_id[node] = id;
+        s.clamp_pos[node] = physics::Double3{ps.pos[id].x, ps.pos[id].y, ps.pos[id].z};
+        const auto o = object_of_id.find(id);
+        if (o != object_of_id.end()) s.clamp_object[node] = o->second;
+        const auto& l = clamp_bonds[node];
+        s.clamp_count[node] = std::uint8_t(l.size());
+        for (std::size_t q = 0; q < l.size(); ++q) {
+            const std::size_t k = q * s.nclamp + node;
+            s.clamp_partner[k] = l[q].first;
+            s.clamp_slot[k] = l[q].second;
+        }
+    }
+    return s;
+}
+
+std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken) {
+    std::vector<std::uint8_t> out(s.nsolid, 0);
+    for (std::uint32_t r = 0; r < s.nsolid; ++r)
+        for (int q = 0; q < s.count[r]; ++q) out[r] = std::uint8_t(out[r] + (broken[std::size_t(q) * s.nsolid + r] ? 1 : 0));
+    return out;
+}
+
+}  // namespace seaspring::solver

@@ -1,0 +1,56 @@
+// SeaSpring — MIT licence.
+/// \file solid_setup.h
+/// \brief The VCPM solids of a case in the layout both backends use: bonds in padded,
+///        slot-major arrays (physics::SolidBonds), clamp nodes with their reverse bond lists
+///        (physics::ClampNodes), one material per body, and the solid time-step limit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "physics/sph_types.h"
+#include "physics/vcpm.h"
+
+namespace seaspring::solver {
+
+struct SolverCase;
+
+/// Host copy of everything the solid part of a backend is set up with (empty: no solids).
+struct SolidSetup {
+    int dim = 3;
+    std::uint32_t first_solid = 0, nsolid = 0;
+    int max_bonds = 0;                       ///< slots per particle (18 in 3D, 8 in 2D)
+    std::vector<std::uint8_t> count;         ///< [nsolid] bonds of each particle
+    std::vector<std::uint32_t> partner;      ///< [max_bonds * nsolid] slot-major
+    std::vector<double> rest;                ///< rest lengths [m]
+    std::vector<std::uint8_t> flags;         ///< physics::VcpmBondFlag
+    std::vector<std::uint16_t> body;         ///< [nsolid] material index
+    std::vector<physics::VcpmMaterial> materials;
+    std::vector<physics::Double3> pos, vel;  ///< initial state [nsolid]
+    std::vector<double> mass;                ///< [nsolid] rho_S dp^D (reports)
+
+    std::uint32_t nclamp = 0;
+    int clamp_max = 0;                       ///< slots per clamp node
+    std::vector<std::uint8_t> clamp_count;   ///< [nclamp]
+    std::vector<std::uint32_t> clamp_partner, clamp_slot;  ///< [clamp_max * nclamp]
+    std::vector<std::uint32_t> clamp_id;     ///< particle id of each clamp node
+    std::vector<physics::Double3> clamp_pos; ///< initial position of each clamp node
+    std::vector<std::int16_t> clamp_object;  ///< motion object moving it, -1 when fixed
+
+    double dt = 0;                 ///< solid sub-step: min over bodies of VcpmDtCoef dp / c_S [s]
+    double wave_speed = 0;         ///< largest P-wave speed c_S [m/s]
+    std::uint64_t bonds = 0, clamp_bonds = 0;  ///< solid-solid pairs (once), clamp bonds
+    std::vector<std::string> body_lines;       ///< one printable line per body
+
+    bool empty() const { return nsolid == 0; }
+};
+
+/// Builds the solids of a case (id order; bonds from gencase's CSR network). Throws
+/// seaspring::Error (file:line of the resolved case) when a solid particle's MK has no body.
+SolidSetup makeSolidSetup(const SolverCase& c);
+
+/// Broken-bond count of every solid particle (host, from the slot states).
+std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken);
+
+}  // namespace seaspring::solver
