@@ -181,7 +181,7 @@ public:
     void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) override {
         if (solid_.empty()) return;
         solid_.steps(dt, n, motions);
-        solid_.toBoundary(a_.pos.data(), a_.velrho.data());
+        solid_.toBoundary(dt * n, a_.pos.data(), a_.velrho.data());
     }
 
     std::uint32_t activeFluid() const override { return nfluid_; }

@@ -29,6 +29,8 @@ void CpuSolid::init(const solver::SolidSetup& s, const physics::StepConstants& s
     vel0_ = s.vel;
     fluid_force_.assign(n_, physics::Double3{0, 0, 0});
     sum_.assign(n_, 0.0);
+    impulse_.assign(n_, physics::Double3{0, 0, 0});
+    work_.assign(n_, 0.0);
     slot_.assign(n_, 0);
     clamp_count_ = s.clamp_count;
     clamp_partner_ = s.clamp_partner;
@@ -119,18 +121,22 @@ void CpuSolid::steps(double dt, int n, const std::vector<physics::RigidMotionGpu
     }
 }
 
-void CpuSolid::toBoundary(physics::Double3* bpos, physics::Float4* bvelrho) const {
+void CpuSolid::toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho) {
     const std::uint32_t* slot = slot_.data();
-    const physics::Double3 *p = pos_.data(), *v = vel_.data();
+    const physics::Double3 *p = pos_.data(), *v = vel_.data(), *f = fluid_force_.data();
+    physics::Double3* imp = impulse_.data();
+    double* work = work_.data();
 #pragma omp parallel for schedule(static)
     for (std::int64_t s = 0; s < std::int64_t(n_); ++s)
-        physics::solidToBoundaryAt(std::uint32_t(s), slot, p, v, bpos, bvelrho);
+        physics::solidToBoundaryAt(std::uint32_t(s), slot, p, v, f, dt, imp, work, bpos, bvelrho);
 }
 
 void CpuSolid::download(solver::HostState& out) const {
     out.solid_vel = vel_;
     out.solid_force = fluid_force_;
     out.bond_broken = broken_;
+    out.solid_impulse = impulse_;
+    out.solid_work = work_;
 }
 
 }  // namespace seaspring::cpu

@@ -26,8 +26,9 @@ public:
 
     /// n sub-steps of dt (clamp nodes moved by `motions` over the whole interval).
     void steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
-    /// Positions and velocities into the boundary block (sorted arrays).
-    void toBoundary(physics::Double3* bpos, physics::Float4* bvelrho) const;
+    /// Positions and velocities into the boundary block (sorted arrays) after a sub-cycle of
+    /// length dt; accumulates the coupling ledger (impulse and work of the hydrodynamic force).
+    void toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho);
     void download(solver::HostState& out) const;
 
 private:
@@ -45,6 +46,8 @@ private:
     std::vector<physics::VcpmMaterial> materials_;
     std::vector<physics::Double3> pos_, pos_half_, vel_, vel0_, fluid_force_;
     std::vector<double> sum_;
+    std::vector<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
+    std::vector<double> work_;               ///< ledger: sum of F . dx per particle [J]
     std::vector<std::uint32_t> slot_;
     std::vector<std::uint8_t> clamp_count_;
     std::vector<std::uint32_t> clamp_partner_, clamp_slot_;

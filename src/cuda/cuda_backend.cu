@@ -1,8 +1,8 @@
 // SeaSpring — MIT licence.
 /// \file cuda_backend.cu
 /// \brief CUDA backend: device arrays, radix sort by (cell, id), gathers, cell ranges, motion,
-///        integration (one thread per particle over the shared per-particle functions) and
-///        the dt reduction.
+///        integration (one thread per particle over the shared per-particle functions), the dt
+///        reduction, and the wiring of the VCPM solids (cuda_solid.cuh) as in the CPU backend.
 #include <cub/device/device_radix_sort.cuh>
 
 #include <string>
@@ -10,6 +10,7 @@
 
 #include "cuda/cuda_arrays.cuh"
 #include "cuda/cuda_forces_impl.cuh"
+#include "cuda/cuda_solid.cuh"
 #include "cuda/device_buffer.cuh"
 
 namespace seaspring::cuda {
@@ -20,6 +21,11 @@ physics::DtMaxima cudaForces_wendland(const solver::PhysicsChoice&, DeviceArrays
 physics::DtMaxima cudaForces_cubic(const solver::PhysicsChoice&, DeviceArrays&, std::uint32_t,
                                    std::uint32_t, const physics::FluidConstants&,
                                    const physics::CellGrid&);
+
+void cudaSolidHydro_wendland(const solver::PhysicsChoice&, DeviceArrays&, const std::uint32_t*, std::uint32_t,
+                             physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
+void cudaSolidHydro_cubic(const solver::PhysicsChoice&, DeviceArrays&, const std::uint32_t*, std::uint32_t,
+                          physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
 
 physics::DtMaxima cudaComputeForces(const solver::PhysicsChoice& choice, DeviceArrays& a,
                                     std::uint32_t nbound, std::uint32_t nfluid,
@@ -208,11 +214,17 @@ public:
         cub::DeviceRadixSort::SortPairs(nullptr, temp, keys_.data(), keys_alt_.data(), perm_.data(),
                                         perm_alt_.data(), int(np));
         sort_temp_.resize(temp > 0 ? temp : 1);
+        if (!s.solid.empty()) solid_.init(s.solid, s.step);
         sortRange(0, nbound_, cs_bound_.data());
+        solid_.updateSlots(id_.data(), nbound_);
     }
 
     void divide() override {
-        if (setup_.nmoving > 0) sortRange(0, nbound_, cs_bound_.data());
+        // Solid particles move inside the boundary block: re-sort it, and find them again.
+        if (setup_.nmoving > 0 || !solid_.empty()) {
+            sortRange(0, nbound_, cs_bound_.data());
+            solid_.updateSlots(id_.data(), nbound_);
+        }
         nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_.data()) - nbound_;
         const std::uint32_t n = nbound_ + nfluid_;
         if (n > 0) {
@@ -231,13 +243,7 @@ public:
     }
 
     physics::DtMaxima computeForces() override {
-        DeviceArrays a;
-        a.v = view();
-        a.cell_start_bound = cs_bound_.data();
-        a.cell_start_fluid = cs_fluid_.data();
-        a.block_maxima = block_maxima_.data();
-        a.maxima = maxima_.data();
-        a.reduce_blocks = reduce_blocks_;
+        DeviceArrays a = arrays();
         return cudaComputeForces(setup_.physics, a, nbound_, nfluid_, setup_.fluid, setup_.grid);
     }
 
@@ -258,6 +264,22 @@ public:
         if (n == 0) return;
         verletKernel<<<blocksFor(n), kThreads>>>(n, nbound_, view(), dt, euler, setup_.step);
         SEASPRING_CUDA_LAUNCH_CHECK();
+    }
+
+    void solidHydroForces() override {
+        if (solid_.empty()) return;
+        DeviceArrays a = arrays();
+        if (setup_.physics.kernel == physics::KernelType::Wendland)
+            cudaSolidHydro_wendland(setup_.physics, a, solid_.slots(), solid_.size(), solid_.fluidForce(),
+                                    setup_.fluid, setup_.grid);
+        else
+            cudaSolidHydro_cubic(setup_.physics, a, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
+                                 setup_.grid);
+    }
+    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) override {
+        if (solid_.empty()) return;
+        solid_.steps(dt, n, motions);
+        solid_.toBoundary(dt * n, pos_.data(), velrho_.data());
     }
 
     std::uint32_t activeFluid() const override { return nfluid_; }
@@ -281,9 +303,22 @@ public:
             out.velrho[ids[i]] = vr[i];
             out.excl[ids[i]] = ex[i];
         }
+        if (!solid_.empty()) solid_.download(out);
     }
 
 private:
+    /// What the force drivers read and write (device pointers).
+    DeviceArrays arrays() {
+        DeviceArrays a;
+        a.v = view();
+        a.cell_start_bound = cs_bound_.data();
+        a.cell_start_fluid = cs_fluid_.data();
+        a.block_maxima = block_maxima_.data();
+        a.maxima = maxima_.data();
+        a.reduce_blocks = reduce_blocks_;
+        return a;
+    }
+
     physics::ParticleView view() {
         physics::ParticleView v;
         v.id = id_.data();
@@ -364,6 +399,7 @@ private:
     DeviceBuffer<std::uint16_t> moving_object_;
     DeviceBuffer<physics::RigidMotionGpu> motions_;
     DeviceBuffer<physics::DtMaxima> block_maxima_, maxima_;
+    CudaSolid solid_;
 };
 
 }  // namespace

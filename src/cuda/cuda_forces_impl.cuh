@@ -2,12 +2,14 @@
 /// \file cuda_forces_impl.cuh
 /// \brief The CUDA force driver for one option set: one thread per particle calling the
 ///        shared per-particle interaction, the SPS stress, and a two-stage max reduction of
-///        the dt maxima (exact, so deterministic).
+///        the dt maxima (exact, so deterministic); and the hydrodynamic force on VCPM solid
+///        particles (one thread per solid particle, physics/solid_coupling.h).
 #pragma once
 
 #include "cuda/cuda_arrays.cuh"
 #include "cuda/cuda_check.cuh"
 #include "physics/fluid_interaction.h"
+#include "physics/solid_coupling.h"
 
 namespace seaspring::cuda {
 
@@ -49,16 +51,42 @@ __global__ void dtMaximaFinalKernel(std::uint32_t nblocks, const physics::DtMaxi
 physics::DtMaxima finishForces(bool sps, DeviceArrays& a, std::uint32_t nbound, std::uint32_t np,
                                const physics::FluidConstants& c);
 
-template <class Opt>
-physics::DtMaxima cudaForcesFor(DeviceArrays& a, std::uint32_t nbound, std::uint32_t nfluid,
-                                const physics::FluidConstants& c, const physics::CellGrid& g) {
+/// What the pair loops read (device pointers); `tau` only with SPS.
+inline physics::InteractionInputs interactionInputs(const DeviceArrays& a, bool sps) {
     physics::InteractionInputs in;
     in.poscell = a.v.poscell;
     in.velrho = a.v.velrho;
     in.cell_start_bound = a.cell_start_bound;
     in.cell_start_fluid = a.cell_start_fluid;
-    in.tau = Opt::sps ? a.v.tau : nullptr;
+    in.tau = sps ? a.v.tau : nullptr;
     in.press_ovrho = a.v.press_ovrho;
+    return in;
+}
+
+template <class Opt>
+__global__ void __launch_bounds__(kForceThreads)
+solidHydroKernel(std::uint32_t nsolid, const std::uint32_t* slot, physics::InteractionInputs in,
+                 physics::FluidConstants c, physics::CellGrid g, physics::Double3* out) {
+    const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
+    if (s < nsolid) out[s] = physics::hydroForceOnBoundary<Opt>(slot[s], in, c, g);
+}
+
+/// The hydrodynamic force on each solid particle s (sorted index slot[s]) from the state of
+/// the last force evaluation (press_ovrho, tau as that evaluation left them), as
+/// cpu::cpuSolidHydroFor.
+template <class Opt>
+void cudaSolidHydroFor(DeviceArrays& a, const std::uint32_t* slot, std::uint32_t nsolid, physics::Double3* out,
+                       const physics::FluidConstants& c, const physics::CellGrid& g) {
+    if (nsolid == 0) return;
+    solidHydroKernel<Opt><<<(nsolid + kForceThreads - 1) / kForceThreads, kForceThreads>>>(
+        nsolid, slot, interactionInputs(a, Opt::sps), c, g, out);
+    SEASPRING_CUDA_LAUNCH_CHECK();
+}
+
+template <class Opt>
+physics::DtMaxima cudaForcesFor(DeviceArrays& a, std::uint32_t nbound, std::uint32_t nfluid,
+                                const physics::FluidConstants& c, const physics::CellGrid& g) {
+    const physics::InteractionInputs in = interactionInputs(a, Opt::sps);
     const std::uint32_t np = nbound + nfluid;
     if (np > 0) {
         pressureKernel<<<(np + 255) / 256, 256>>>(np, a.v, c);

@@ -1,6 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file cuda_forces_wendland.cu
-/// \brief CUDA force instantiations for the wendland kernel (2D and 3D).
+/// \brief CUDA force instantiations for the wendland kernel (2D and 3D): the fluid forces and the
+///        hydrodynamic force on VCPM solid particles.
 #include "cuda/cuda_forces_impl.cuh"
 #include "solver/fluid_dispatch.h"
 
@@ -14,6 +15,14 @@ physics::DtMaxima cudaForces_wendland(const solver::PhysicsChoice& choice, Devic
     if (choice.dim == 2) solver::dispatchViscoDdt<physics::WendlandKernel, 2>(choice, run);
     else solver::dispatchViscoDdt<physics::WendlandKernel, 3>(choice, run);
     return m;
+}
+
+void cudaSolidHydro_wendland(const solver::PhysicsChoice& choice, DeviceArrays& a, const std::uint32_t* slot,
+                             std::uint32_t nsolid, physics::Double3* out, const physics::FluidConstants& c,
+                             const physics::CellGrid& g) {
+    auto run = [&](auto opt) { cudaSolidHydroFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
+    if (choice.dim == 2) solver::dispatchVisco<physics::WendlandKernel, 2>(choice, run);
+    else solver::dispatchVisco<physics::WendlandKernel, 3>(choice, run);
 }
 
 }  // namespace seaspring::cuda

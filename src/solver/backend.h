@@ -54,6 +54,8 @@ struct HostState {
     std::vector<physics::Double3> solid_vel;     ///< double-precision velocity
     std::vector<physics::Double3> solid_force;   ///< last hydrodynamic force F_F->S [N]
     std::vector<std::uint8_t> bond_broken;       ///< per bond slot (SolidSetup layout)
+    std::vector<physics::Double3> solid_impulse; ///< ledger: time integral of solid_force [N s]
+    std::vector<double> solid_work;              ///< ledger: work of solid_force on the solid [J]
 };
 
 class Backend {

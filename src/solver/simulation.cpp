@@ -17,6 +17,7 @@
 #include "io/vtu_writer.h"
 #include "io/xdmf_series.h"
 #include "physics/eos_tait.h"
+#include "solver/coupling_ledger.h"
 #include "solver/motion_player.h"
 #include "solver/state_hash.h"
 
@@ -150,12 +151,18 @@ struct Simulation::Output {
     explicit Output(const std::string& dir) : xdmf(dir) {}
 };
 
+struct Simulation::Ledger {
+    LedgerFile file;
+    explicit Ledger(const std::string& dir) : file(dir) {}
+};
+
 Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr<Backend> backend,
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     setup_ = makeBackendSetup(c, o.cell_div);
     fs::create_directories(opt_.outdir);
     if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir);
+    if (!setup_.solid.empty()) ledger_ = std::make_shared<Ledger>(opt_.outdir);
     sum_.case_name = c.name;
     sum_.backend = backend_->name();
     sum_.device = backend_->deviceName();
@@ -199,31 +206,6 @@ void Simulation::placeMoving(double time, double interval) {
     backend_->applyMotion(motionsOver(time, interval));
 }
 
-std::uint64_t Simulation::brokenBonds(const HostState& st) const {
-    const SolidSetup& so = setup_.solid;
-    std::uint64_t solid_slots = 0, clamp = 0;
-    for (std::size_t k = 0; k < st.bond_broken.size(); ++k)
-        if (st.bond_broken[k]) ((so.flags[k] & physics::kBondClamp) ? clamp : solid_slots) += 1;
-    return solid_slots / 2 + clamp;
-}
-
-void Simulation::solidOnlySteps(double time, long long n, double dt) {
-    while (n > 0) {
-        const int chunk = int(std::min<long long>(n, 1 << 30));
-        backend_->solidSteps(dt, chunk, motionsOver(time, dt * chunk));
-        time += dt * chunk;
-        n -= chunk;
-    }
-}
-
-void Simulation::advanceSolid(double time, double dt_fluid) {
-    if (setup_.solid.empty()) return;
-    const int omega = physics::solidSubsteps(dt_fluid, setup_.solid.dt);
-    backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid));
-    sum_.solid_substeps += omega;
-    sum_.omega_max = std::max(sum_.omega_max, omega);
-}
-
 double Simulation::limitDt(double dt) {
     const double h = case_.constants.h, cs0 = case_.constants.speedsound;
     const double dtmin = case_.params.dt_min > 0 ? case_.params.dt_min : case_.params.coef_dt_min * h / cs0;
@@ -235,40 +217,6 @@ double Simulation::limitDt(double dt) {
         return dtmin;
     }
     return dt;
-}
-
-void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
-                             std::vector<std::uint8_t>& broken) const {
-    const SolidSetup& so = setup_.solid;
-    const std::size_t np = st.pos.size();
-    disp.assign(3 * np, 0.f);
-    strain.assign(np, 0.f);
-    broken.assign(np, 0);
-    for (std::uint32_t r = 0; r < so.nsolid; ++r) {
-        const std::uint32_t id = so.first_solid + r;
-        const physics::Double3 p = st.pos[id];
-        const Vec3d p0 = case_.particles.pos[id];
-        disp[3 * id] = float(p.x - p0.x);
-        disp[3 * id + 1] = float(p.y - p0.y);
-        disp[3 * id + 2] = float(p.z - p0.z);
-        double sum = 0;
-        int intact = 0, nbroken = 0;
-        for (int q = 0; q < so.count[r]; ++q) {
-            const std::size_t k = std::size_t(q) * so.nsolid + r;
-            if (st.bond_broken[k]) {
-                ++nbroken;
-                continue;
-            }
-            const std::uint32_t j = (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]]
-                                                                         : so.first_solid + so.partner[k];
-            double dx, dy, dz;
-            const double len = physics::bondVector(p, st.pos[j], dx, dy, dz);
-            sum += (len - so.rest[k]) / so.rest[k];
-            ++intact;
-        }
-        strain[id] = intact > 0 ? float(sum / intact) : 0.f;
-        broken[id] = std::uint8_t(nbroken);
-    }
 }
 
 void Simulation::output(double time, long long step) {
@@ -293,7 +241,12 @@ void Simulation::output(double time, long long step) {
     }
     std::vector<float> disp, strain;
     std::vector<std::uint8_t> broken;
-    if (!setup_.solid.empty()) solidFields(st, disp, strain, broken);
+    if (!setup_.solid.empty()) {
+        solidFields(st, disp, strain, broken);
+        const Vec3d g = case_.constants.gravity;
+        ledger_->file.add(ledgerRow(time, st, setup_.solid, case_.particles.pos, setup_.nbound,
+                                    case_.constants.massfluid, physics::Double3{g.x, g.y, g.z}));
+    }
     if (opt_.save_h5) {
         io::PartFrame f;
         if (!disp.empty()) {

@@ -82,6 +82,8 @@ private:
     int out_index_ = 0;
     struct Output;
     std::shared_ptr<Output> out_;
+    struct Ledger;
+    std::shared_ptr<Ledger> ledger_;
     OutputObserver observer_;
 };
 

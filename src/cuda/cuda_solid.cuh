@@ -1,0 +1,91 @@
+// SeaSpring — MIT licence.
+/// \file cuda_solid.cuh
+/// \brief CUDA driver of the VCPM solids, the mirror of cpu::CpuSolid: the same arrays
+///        (solid-index order, slot-major bonds) in device memory, and kernels that call the
+///        same functions of physics/vcpm.h and physics/solid_coupling.h, pass by pass, in the
+///        same order, so both backends give the same bits.
+///
+/// A sub-step is six passes (sums at r^m, clamp sums, predictor, sums at r^{m+1/2}, clamp sums,
+/// corrector), each needing the previous one complete. A solid sub-cycle may have tens of
+/// sub-steps per fluid step, so:
+///  - small solids (nsolid + nclamp <= kSolidBlockMaxDefault) run the whole sub-cycle, clamp
+///    motion included, in ONE single-block kernel with __syncthreads() between the passes: one
+///    launch per steps() call instead of 1 + 6 n;
+///  - large solids launch one grid-wide kernel per pass (clamp motion, then 4 or 6 per sub-step),
+///    to use every SM.
+/// The two paths compute the same per-particle calls in the same pass order, so they agree bit
+/// for bit (and with the CPU); `SEASPRING_SOLID_BLOCK_MAX=N` in the environment moves the
+/// threshold, to compare or time the two paths on one case.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cuda/device_buffer.cuh"
+#include "physics/particle_updates.h"
+#include "physics/time_integration.h"
+#include "physics/vcpm.h"
+#include "solver/backend.h"
+
+namespace seaspring::cuda {
+
+/// Threads of the single-block sub-cycle kernel (block-stride loops over the particles).
+constexpr int kSolidBlockThreads = 1024;
+
+/// Default largest nsolid + nclamp run by the single-block kernel. Why this value: one SM
+/// computes a pass over up to 1024 particles (one per thread) in about the latency of one
+/// particle's bond loop, which is about the cost of one launch; beyond about two particles per
+/// thread the double-precision work of the block (about 2,400 DP operations per particle and
+/// sub-step, estimated) exceeds the launch gaps that the per-pass kernels spend, and those
+/// spread the work over all SMs. Not measured yet: tune it with SEASPRING_SOLID_BLOCK_MAX.
+constexpr std::uint32_t kSolidBlockMaxDefault = 2048;
+
+class CudaSolid {
+public:
+    void init(const solver::SolidSetup& s, const physics::StepConstants& step);
+    bool empty() const { return n_ == 0; }
+    std::uint32_t size() const { return n_; }
+
+    /// slot[s] = sorted index of solid particle s, from the sorted ids (device) of the boundary
+    /// block [0, nbound).
+    void updateSlots(const std::uint32_t* id, std::uint32_t nbound);
+    const std::uint32_t* slots() const { return slot_.data(); }
+    physics::Double3* fluidForce() { return fluid_force_.data(); }
+
+    /// n sub-steps of dt (clamp nodes moved by `motions` over the whole interval).
+    void steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
+    /// Positions and velocities into the boundary block (sorted device arrays) after a
+    /// sub-cycle of length dt; accumulates the coupling ledger (impulse and work of the
+    /// hydrodynamic force), as CpuSolid::toBoundary.
+    void toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho);
+    /// solid_vel, solid_force, bond_broken, solid_impulse, solid_work (the CPU's layouts).
+    void download(solver::HostState& out) const;
+
+private:
+    physics::SolidState state() const;
+    physics::SolidBonds bonds() const;
+    physics::ClampNodes clamps() const;
+    void stepsPerPass(double dt, int n);
+
+    std::uint32_t n_ = 0, nclamp_ = 0, first_ = 0;
+    std::uint32_t block_max_ = kSolidBlockMaxDefault;
+    physics::StepConstants step_;
+    DeviceBuffer<std::uint8_t> count_, flags_, broken_;
+    DeviceBuffer<std::uint32_t> partner_;
+    DeviceBuffer<double> rest_;
+    DeviceBuffer<std::uint16_t> body_;
+    DeviceBuffer<physics::VcpmMaterial> materials_;
+    DeviceBuffer<physics::Double3> pos_, pos_half_, vel_, vel0_, fluid_force_;
+    DeviceBuffer<double> sum_;
+    DeviceBuffer<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
+    DeviceBuffer<double> work_;               ///< ledger: sum of F . dx per particle [J]
+    DeviceBuffer<std::uint32_t> slot_;
+    DeviceBuffer<std::uint8_t> clamp_count_;
+    DeviceBuffer<std::uint32_t> clamp_partner_, clamp_slot_;
+    DeviceBuffer<physics::Double3> clamp_pos_initial_, clamp_start_, clamp_end_;
+    DeviceBuffer<std::int16_t> clamp_object_;
+    DeviceBuffer<double> clamp_sum_;
+    DeviceBuffer<physics::RigidMotionGpu> motions_;  ///< the poses of the current steps() call
+};
+
+}  // namespace seaspring::cuda

@@ -1,0 +1,71 @@
+// SeaSpring — MIT licence.
+/// \file simulation_solids.cpp
+/// \brief The VCPM parts of the time loop (see simulation.h): the solid sub-cycle of a fluid
+///        step, solid-only steps, broken-bond counts and the solid fields of the outputs.
+#include <algorithm>
+
+#include "physics/vcpm.h"
+#include "solver/simulation.h"
+
+namespace seaspring::solver {
+
+std::uint64_t Simulation::brokenBonds(const HostState& st) const {
+    const SolidSetup& so = setup_.solid;
+    std::uint64_t solid_slots = 0, clamp = 0;
+    for (std::size_t k = 0; k < st.bond_broken.size(); ++k)
+        if (st.bond_broken[k]) ((so.flags[k] & physics::kBondClamp) ? clamp : solid_slots) += 1;
+    return solid_slots / 2 + clamp;
+}
+
+void Simulation::solidOnlySteps(double time, long long n, double dt) {
+    while (n > 0) {
+        const int chunk = int(std::min<long long>(n, 1 << 30));
+        backend_->solidSteps(dt, chunk, motionsOver(time, dt * chunk));
+        time += dt * chunk;
+        n -= chunk;
+    }
+}
+
+void Simulation::advanceSolid(double time, double dt_fluid) {
+    if (setup_.solid.empty()) return;
+    const int omega = physics::solidSubsteps(dt_fluid, setup_.solid.dt);
+    backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid));
+    sum_.solid_substeps += omega;
+    sum_.omega_max = std::max(sum_.omega_max, omega);
+}
+
+void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
+                             std::vector<std::uint8_t>& broken) const {
+    const SolidSetup& so = setup_.solid;
+    const std::size_t np = st.pos.size();
+    disp.assign(3 * np, 0.f);
+    strain.assign(np, 0.f);
+    broken.assign(np, 0);
+    for (std::uint32_t r = 0; r < so.nsolid; ++r) {
+        const std::uint32_t id = so.first_solid + r;
+        const physics::Double3 p = st.pos[id];
+        const Vec3d p0 = case_.particles.pos[id];
+        disp[3 * id] = float(p.x - p0.x);
+        disp[3 * id + 1] = float(p.y - p0.y);
+        disp[3 * id + 2] = float(p.z - p0.z);
+        double sum = 0;
+        int intact = 0, nbroken = 0;
+        for (int q = 0; q < so.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * so.nsolid + r;
+            if (st.bond_broken[k]) {
+                ++nbroken;
+                continue;
+            }
+            const std::uint32_t j = (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]]
+                                                                         : so.first_solid + so.partner[k];
+            double dx, dy, dz;
+            const double len = physics::bondVector(p, st.pos[j], dx, dy, dz);
+            sum += (len - so.rest[k]) / so.rest[k];
+            ++intact;
+        }
+        strain[id] = intact > 0 ? float(sum / intact) : 0.f;
+        broken[id] = std::uint8_t(nbroken);
+    }
+}
+
+}  // namespace seaspring::solver
