@@ -17,4 +17,6 @@ du -sh "$build/bin" "$build/lib"
 # The shared DualSPHysics inputs live outside the repository and do not travel: copy them.
 mkdir -p "$build/shared-cases"
 cp "$root/../shared/dualsphysics-cases/Spheric2Dam_01M.xml" \
-   "$root/../shared/dualsphysics-cases/CaseDambreakVal2D_Def.xml" "$build/shared-cases/"
+   "$root/../shared/dualsphysics-cases/CaseDambreakVal2D_Def.xml" \
+   "$root/../shared/validation-data/antoci2007-elastic-gate/exp_tip_dx_antoci2007_digitized_A.csv" \
+   "$root/../shared/validation-data/antoci2007-elastic-gate/exp_tip_dy_antoci2007_digitized_A.csv" "$build/shared-cases/"

@@ -41,5 +41,18 @@ parity plate2d_coupled "$work/plate" 400
 parity dbplate3d_breaking "$work/dbplate" 1800
 (cd "$work" && tar czf "$out/logs.tgz" ./*.log) 2>/dev/null
 echo "== parity (db3d fluid-only hash of the previous release: c831d1020e07417e) =="; cat "$table"
+# Antoci 2007 gate (2D, dp 1 mm) to 0.4 s on the GPU; free-end marker vs the experiment
+# (needs h5py: carry .whl with an h5py wheel for Python 3.12).
+"$bin/gencase" "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" "$work/antoci" >/dev/null
+/usr/bin/time -f "antoci wall %e s" "$bin/seaspring" -gpu -progress:0 "$work/antoci" "$work/o_antoci" >"$work/antoci.log" 2>&1
+grep -E "Finished|Solids|hash|antoci wall" "$work/antoci.log" | tee "$out/antoci.txt"
+cp "$work/o_antoci/ledger.csv" "$out/antoci_ledger.csv" 2>/dev/null
+if ls "$root"/.whl/h5py-*.whl >/dev/null 2>&1; then
+  python3 -m pip install -q --no-index --no-deps --no-compile --no-cache-dir --target /tmp/site "$root"/.whl/*.whl &&
+    PYTHONPATH=/tmp/site python3 "$root/tools/solid_marker.py" "$work/o_antoci" --point 0.102,0,0.003 \
+      --csv "$out/antoci_tip.csv" --window 0.36 \
+      --ref-x "$root/build-dev/shared-cases/exp_tip_dx_antoci2007_digitized_A.csv" \
+      --ref-z "$root/build-dev/shared-cases/exp_tip_dy_antoci2007_digitized_A.csv" 2>&1 | tee -a "$out/antoci.txt"
+fi
 SEASPRING_BIN="$bin" BENCH_DIR="$work/bench" "$root/tools/bench_solid.sh" -gpu "$@" 2>&1 | tee "$out/bench_solid.txt"
 cp "$work/bench/bench_solid.csv" "$out/" 2>/dev/null
