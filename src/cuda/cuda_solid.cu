@@ -208,12 +208,11 @@ void CudaSolid::steps(double dt, int n, const std::vector<physics::RigidMotionGp
     cm.pos_start = clamp_start_.data();
     cm.pos_end = clamp_end_.data();
     if (nclamp_ > 0 && !motions.empty()) {
-        // Asynchronous on the default stream: ordered with the kernels, and a pageable source is
-        // staged before the call returns, so the host vector may go away afterwards.
+        // Synchronous, as in applyMotion: the caller's vector is a temporary, and the time step
+        // drains the queue at its dt readback anyway, so waiting here costs little.
         motions_.resize(motions.size());
-        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(motions_.data(), motions.data(),
-                                             motions.size() * sizeof(physics::RigidMotionGpu),
-                                             cudaMemcpyHostToDevice));
+        SEASPRING_CUDA_CHECK(cudaMemcpy(motions_.data(), motions.data(),
+                                        motions.size() * sizeof(physics::RigidMotionGpu), cudaMemcpyHostToDevice));
         cm.motions = motions_.data();
     }
     const double gx = step_.gx, gy = step_.gy, gz = step_.gz;
