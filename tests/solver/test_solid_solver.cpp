@@ -1,0 +1,657 @@
+// SeaSpring — MIT licence.
+/// \file test_solid_solver.cpp
+/// \brief VCPM solids in the solver (CPU backend, in-process), against analytic solutions:
+///        the hanging beam under self-weight (resolution series and observed order), the 2D
+///        cantilever under a gravity step load (first natural frequency and static deflection
+///        against Euler-Bernoulli), the breaking bar (breakage at the support, free fall, a
+///        control that never breaks), thread-count parity with breakage (solid-only and
+///        coupled), and the hydrodynamic force on the hydrostatic plate against the weight of
+///        the water. Cases: cases/hanging_beam, cases/cantilever2d, cases/breaking_bar,
+///        cases/hydrostatic_plate; their README.md files give the measured numbers that the
+///        tolerances below come from.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "solver/solid_setup.h"
+#include "solver/solver_case.h"
+#include "solver_test_util.h"
+
+using namespace seaspring;
+
+namespace {
+
+std::string scratch(const std::string& tag) {
+    return ::testing::TempDir() + "seaspring_solid_" + tag + "_" + std::to_string(::getpid());
+}
+
+std::string caseDef(const std::string& rel) { return std::string(SEASPRING_SOURCE_DIR) + "/cases/" + rel; }
+
+std::string readFile(const std::string& path) {
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+/// `text` with the one occurrence of `from` replaced (fails the test when it is not there once).
+std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t k = text.find(from);
+    EXPECT_NE(k, std::string::npos) << "'" << from << "' not found";
+    EXPECT_EQ(text.find(from, k + 1), std::string::npos) << "'" << from << "' found twice";
+    if (k != std::string::npos) text.replace(k, from.size(), to);
+    return text;
+}
+
+double dist(const physics::Double3& a, const physics::Double3& b) {
+    return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+bool finite(const physics::Double3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+
+/// Particle id of the partner of bond slot k (solid or clamp node).
+std::uint32_t partnerId(const solver::SolidSetup& so, std::size_t k) {
+    return (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]] : so.first_solid + so.partner[k];
+}
+
+/// Largest relative stretch (|r| - L0)/L0 over the intact bonds of the solid particles in `which`
+/// (all when empty).
+double maxStretch(const solver::SolidSetup& so, const solver::HostState& st, const std::vector<char>& which = {}) {
+    double m = -1e300;
+    for (std::uint32_t s = 0; s < so.nsolid; ++s) {
+        if (!which.empty() && !which[s]) continue;
+        for (int q = 0; q < so.count[s]; ++q) {
+            const std::size_t k = std::size_t(q) * so.nsolid + s;
+            if (st.bond_broken[k]) continue;
+            m = std::max(m, (dist(st.pos[so.first_solid + s], st.pos[partnerId(so, k)]) - so.rest[k]) / so.rest[k]);
+        }
+    }
+    return m;
+}
+
+std::size_t brokenSlots(const solver::HostState& st) {
+    return std::size_t(std::count_if(st.bond_broken.begin(), st.bond_broken.end(), [](std::uint8_t b) { return b != 0; }));
+}
+
+/// Solid particles still connected to a clamp node through intact bonds (1) or detached (0).
+std::vector<char> attachedToClamp(const solver::SolidSetup& so, const std::vector<std::uint8_t>& broken) {
+    const std::uint32_t n = so.nsolid;
+    std::vector<char> att(n, 0);
+    std::vector<std::uint32_t> stack;
+    for (std::uint32_t s = 0; s < n; ++s)
+        for (int q = 0; q < so.count[s]; ++q) {
+            const std::size_t k = std::size_t(q) * n + s;
+            if ((so.flags[k] & physics::kBondClamp) && !broken[k] && !att[s]) {
+                att[s] = 1;
+                stack.push_back(s);
+            }
+        }
+    while (!stack.empty()) {
+        const std::uint32_t s = stack.back();
+        stack.pop_back();
+        for (int q = 0; q < so.count[s]; ++q) {
+            const std::size_t k = std::size_t(q) * n + s;
+            if (broken[k] || (so.flags[k] & physics::kBondClamp)) continue;
+            const std::uint32_t j = so.partner[k];
+            if (!att[j]) {
+                att[j] = 1;
+                stack.push_back(j);
+            }
+        }
+    }
+    return att;
+}
+
+/// Oscillation of a sampled signal about its mean: the crossings of the mean (linear
+/// interpolation) over a whole number of periods, T = 2 (last - first crossing) / (crossings - 1),
+/// the mean taken between the first and the last of them (trapezoids; iterated from the plain
+/// mean), and the peak-to-peak range of the first and the last period.
+struct Oscillation {
+    double frequency = 0, mean = 0, first_pp = 0, last_pp = 0;
+    int crossings = 0;
+};
+
+Oscillation analyseOscillation(const std::vector<double>& t, const std::vector<double>& z) {
+    Oscillation o;
+    if (t.size() < 4) return o;
+    double m = 0;
+    for (double v : z) m += v;
+    m /= double(z.size());
+    std::vector<double> cr;
+    for (int it = 0; it < 4; ++it) {
+        cr.clear();
+        for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+            const double a = z[k] - m, b = z[k + 1] - m;
+            if (a == 0 || (a < 0) != (b < 0)) cr.push_back(t[k] + (t[k + 1] - t[k]) * a / (a - b));
+        }
+        if (cr.size() < 3) return o;
+        cr.resize((cr.size() - 1) / 2 * 2 + 1);  // whole periods only: the mean of a part period is biased
+        double integral = 0, t0 = -1, t1 = -1;
+        for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+            if (t[k] < cr.front() || t[k + 1] > cr.back()) continue;
+            if (t0 < 0) t0 = t[k];
+            t1 = t[k + 1];
+            integral += 0.5 * (z[k] + z[k + 1]) * (t[k + 1] - t[k]);
+        }
+        m = integral / (t1 - t0);
+    }
+    const double period = 2.0 * (cr.back() - cr.front()) / double(cr.size() - 1);
+    o.frequency = 1.0 / period;
+    o.mean = m;
+    o.crossings = int(cr.size());
+    auto range = [&](double a, double b) {
+        double lo = 1e300, hi = -1e300;
+        for (std::size_t k = 0; k < t.size(); ++k)
+            if (t[k] >= a && t[k] <= b) {
+                lo = std::min(lo, z[k]);
+                hi = std::max(hi, z[k]);
+            }
+        return hi - lo;
+    };
+    o.first_pp = range(0.0, period);
+    o.last_pp = range(t.back() - period, t.back());
+    return o;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// 1. Hanging beam (seed paper 000 §3.1): 0.1 x 0.1 x 0.6 m, rho 2500, E 3 MPa, nu 0.3, damped
+//    to its static state in 5 s. Free-end displacement of the 1D bar rho g L^2/(2E) = 1.4715 mm;
+//    the clamped lattice converges to it from above (the paper's Fig. 5: order 1 to 2).
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+struct BeamResult {
+    double tip = 0;          ///< mean axial displacement of the bottom layer at the end [m] (< 0)
+    double tip_before = 0;   ///< the same 0.5 s before the end
+    double max_antisym = 0;  ///< largest |u_x(x) + u_x(mirror x)|, |u_y(y) + u_y(mirror y)| [m]
+    double max_sym = 0;      ///< largest |u_z(x) - u_z(mirror x)| (same for y) [m]
+    double clamp_moved = 0;  ///< largest displacement of a fixed boundary particle [m]
+    std::uint64_t broken = 0;
+    std::size_t broken_slots = 0;
+    bool finite = true;
+};
+
+BeamResult runHangingBeam(double dp) {
+    const std::string tag = "hb" + std::to_string(int(std::lround(dp * 1e4)));
+    const std::string dir = scratch(tag);
+    const std::string kase = test::generateCaseFile(dir, "hb", caseDef("hanging_beam/HangingBeam_Def.xml"), dp);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const std::uint32_t first = c.nfixed + c.nmoving, n = c.nsolid;
+    const auto& p0 = c.particles.pos;
+    double zmin = 1e300;
+    for (std::uint32_t i = first; i < first + n; ++i) zmin = std::min(zmin, p0[i].z);
+    std::vector<std::uint32_t> bottom;
+    for (std::uint32_t i = first; i < first + n; ++i)
+        if (p0[i].z < zmin + 0.25 * dp) bottom.push_back(i);
+    auto tipOf = [&](const solver::HostState& st) {
+        double u = 0;
+        for (std::uint32_t i : bottom) u += st.pos[i].z - p0[i].z;
+        return u / double(bottom.size());
+    };
+    BeamResult res;
+    std::vector<double> history;  // the tip at every output (TimeOut 0.5 s)
+    const auto r = test::runCpu(kase, dir + "/out", 2, {}, [&](double, long long, const solver::HostState& st) {
+        history.push_back(tipOf(st));
+    });
+    const solver::HostState& st = r.state;
+    res.tip = tipOf(st);
+    EXPECT_GE(history.size(), 3u);
+    if (history.size() >= 2) res.tip_before = history[history.size() - 2];
+    res.broken = r.summary.broken_bonds;
+    res.broken_slots = brokenSlots(st);
+    for (std::uint32_t i = 0; i < c.nfixed; ++i) res.clamp_moved = std::max(res.clamp_moved, dist(st.pos[i], {p0[i].x, p0[i].y, p0[i].z}));
+    // Mirror pairs of lattice sites about the beam's axis (x and y).
+    std::map<std::tuple<long, long, long>, std::uint32_t> site;
+    long imin = 1L << 40, imax = -(1L << 40), jmin = imin, jmax = imax;
+    for (std::uint32_t i = first; i < first + n; ++i) {
+        const long a = std::lround(p0[i].x / dp), b = std::lround(p0[i].y / dp), k = std::lround(p0[i].z / dp);
+        site[{a, b, k}] = i;
+        imin = std::min(imin, a);
+        imax = std::max(imax, a);
+        jmin = std::min(jmin, b);
+        jmax = std::max(jmax, b);
+        res.finite = res.finite && finite(st.pos[i]);
+    }
+    for (const auto& [key, i] : site) {
+        const auto [a, b, k] = key;
+        const auto mx = site.find({imin + imax - a, b, k});
+        const auto my = site.find({a, jmin + jmax - b, k});
+        EXPECT_TRUE(mx != site.end() && my != site.end()) << "no mirror site for particle " << i;
+        if (mx == site.end() || my == site.end()) continue;
+        const std::uint32_t ix = mx->second, iy = my->second;
+        const double ux = st.pos[i].x - p0[i].x, uxm = st.pos[ix].x - p0[ix].x;
+        const double uy = st.pos[i].y - p0[i].y, uym = st.pos[iy].y - p0[iy].y;
+        const double uz = st.pos[i].z - p0[i].z;
+        res.max_antisym = std::max({res.max_antisym, std::fabs(ux + uxm), std::fabs(uy + uym)});
+        res.max_sym = std::max({res.max_sym, std::fabs(uz - (st.pos[ix].z - p0[ix].z)),
+                                std::fabs(uz - (st.pos[iy].z - p0[iy].z))});
+    }
+    return res;
+}
+
+}  // namespace
+
+TEST(SolidSolver, HangingBeamConvergesToTheBarSolution) {
+    const double analytic = 2500.0 * 9.81 * 0.6 * 0.6 / (2.0 * 3e6);  // 1.4715e-3 m
+    const double dps[2] = {0.02, 0.01};
+    double err[2];
+    for (int k = 0; k < 2; ++k) {
+        const BeamResult b = runHangingBeam(dps[k]);
+        const double ratio = -b.tip / analytic;
+        err[k] = ratio - 1.0;
+        std::printf("hanging beam dp %.3f: free-end displacement %.6e m, / analytic = %.4f (0.5 s earlier %.4f); "
+                    "symmetry: antisym %.2e m, sym %.2e m\n",
+                    dps[k], -b.tip, ratio, -b.tip_before / analytic, b.max_antisym, b.max_sym);
+        // Measured 1.168 (dp 0.02) and 1.075 (dp 0.01): converging from above.
+        EXPECT_GT(ratio, 0.98) << dps[k];
+        EXPECT_LT(ratio, 1.25) << dps[k];
+        // Settled: the last 0.5 s changed the displacement by less than 0.1 % (measured 3e-5 at dp 0.01).
+        EXPECT_LT(std::fabs(b.tip - b.tip_before), 1e-3 * std::fabs(b.tip)) << dps[k];
+        EXPECT_EQ(b.broken, 0u) << dps[k];
+        EXPECT_EQ(b.broken_slots, 0u) << dps[k];
+        EXPECT_TRUE(b.finite) << dps[k];
+        // The clamp plate (fixed boundary) does not move at all.
+        EXPECT_EQ(b.clamp_moved, 0.0) << dps[k];
+        // Lateral symmetry about the beam's axis: the lattice and the clamp bonds are symmetric and
+        // only the summation order differs between mirror particles (measured 3e-16 m).
+        EXPECT_LT(b.max_antisym, 1e-12) << dps[k];
+        EXPECT_LT(b.max_sym, 1e-12) << dps[k];
+    }
+    EXPECT_LT(std::fabs(err[1]), std::fabs(err[0]));
+    const double order = std::log(err[0] / err[1]) / std::log(dps[0] / dps[1]);
+    std::printf("hanging beam: observed order %.3f\n", order);
+    EXPECT_GT(order, 0.8);
+    EXPECT_LT(order, 2.5);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. Cantilever 2D (plane strain) under a gravity step load of 1 m/s^2, no damping: the tip
+//    oscillates about its static deflection. Euler-Bernoulli: f1 = 1.8751^2/(2 pi)
+//    sqrt(E' I/(rho t L^4)) = 3.9365 Hz, delta = q L^4/(8 E' I) = 2.526 mm, E' = E/(1-nu^2).
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+struct CantileverResult {
+    Oscillation osc;
+    std::size_t broken_slots = 0;
+    bool finite = true;
+    std::uint32_t thickness = 0;  ///< particles through the thickness
+};
+
+CantileverResult runCantilever(double dp) {
+    const std::string dir = scratch("cl" + std::to_string(int(std::lround(dp * 1e5))));
+    const std::string kase = test::generateCaseFile(dir, "cl", caseDef("cantilever2d/Cantilever2D_Def.xml"), dp);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const std::uint32_t first = c.nfixed + c.nmoving, n = c.nsolid;
+    const auto& p0 = c.particles.pos;
+    double xmax = -1e300;
+    for (std::uint32_t i = first; i < first + n; ++i) xmax = std::max(xmax, p0[i].x);
+    std::vector<std::uint32_t> tip;
+    for (std::uint32_t i = first; i < first + n; ++i)
+        if (p0[i].x > xmax - 0.25 * dp) tip.push_back(i);
+    CantileverResult res;
+    res.thickness = std::uint32_t(tip.size());
+    std::vector<double> ts, zs;
+    const auto r = test::runCpu(kase, dir + "/out", 2, {}, [&](double t, long long, const solver::HostState& st) {
+        double u = 0;
+        for (std::uint32_t i : tip) u += st.pos[i].z - p0[i].z;
+        ts.push_back(t);
+        zs.push_back(u / double(tip.size()));
+        for (std::uint32_t i = first; i < first + n; ++i) res.finite = res.finite && finite(st.pos[i]);
+    });
+    res.osc = analyseOscillation(ts, zs);
+    res.broken_slots = brokenSlots(r.state);
+    return res;
+}
+
+}  // namespace
+
+TEST(SolidSolver, Cantilever2DFrequencyAndStaticDeflection) {
+    const double E = 2e6, nu = 0.3975, rho = 1000, t = 0.02, L = 0.2, g = 1.0;
+    const double Ep = E / (1 - nu * nu), I = t * t * t / 12;
+    const double pi = std::acos(-1.0);
+    const double f_eb = 1.8751 * 1.8751 / (2 * pi) * std::sqrt(Ep * I / (rho * t * std::pow(L, 4)));
+    const double d_eb = rho * g * t * std::pow(L, 4) / (8 * Ep * I);
+    // First-mode step response: omega1^2 delta_static = (1.8751^4 / 8) g, whatever the stiffness.
+    const double w2d = std::pow(1.8751, 4) / 8 * g;
+    const double dps[2] = {0.005, 0.0025};
+    // Measured (README): f/f_EB - 1 = -13.5 % (4 particles thick), -6.7 % (8); delta/delta_EB - 1 =
+    // +30.9 %, +13.4 %: first order in dp (the lattice's free surfaces are softer in bending).
+    const double max_ferr[2] = {0.16, 0.08}, max_derr[2] = {0.36, 0.16};
+    double ferr[2], derr[2];
+    for (int k = 0; k < 2; ++k) {
+        const CantileverResult c = runCantilever(dps[k]);
+        const Oscillation& o = c.osc;
+        ferr[k] = o.frequency / f_eb - 1;
+        derr[k] = -o.mean / d_eb - 1;
+        const double w = 2 * pi * o.frequency;
+        std::printf("cantilever dp %.4f (%u thick): f %.4f Hz (EB %.4f, %+.2f %%), static %.4e m (EB %.4e, %+.2f %%), "
+                    "omega^2 delta / (1.8751^4 g/8) = %.4f, crossings %d, peak-to-peak first %.4e last %.4e\n",
+                    dps[k], c.thickness, o.frequency, f_eb, 100 * ferr[k], -o.mean, d_eb, 100 * derr[k],
+                    w * w * -o.mean / w2d, o.crossings, o.first_pp, o.last_pp);
+        ASSERT_GE(o.crossings, 5) << dps[k];
+        EXPECT_TRUE(c.finite) << dps[k];
+        EXPECT_EQ(c.broken_slots, 0u) << dps[k];
+        // The lattice is softer than the beam: frequency below, deflection above.
+        EXPECT_LT(ferr[k], 0.0) << dps[k];
+        EXPECT_GT(ferr[k], -max_ferr[k]) << dps[k];
+        EXPECT_GT(derr[k], 0.0) << dps[k];
+        EXPECT_LT(derr[k], max_derr[k]) << dps[k];
+        // Frequency and deflection of one run are consistent with one stiffness (measured 0.979, 0.987).
+        EXPECT_NEAR(w * w * -o.mean / w2d, 1.0, 0.04) << dps[k];
+        // No damping: the oscillation keeps its amplitude (measured within 0.1 % over 3 periods).
+        EXPECT_NEAR(o.last_pp / o.first_pp, 1.0, 0.01) << dps[k];
+    }
+    // Refinement halves the errors (first order; measured ratios 0.50 and 0.43).
+    EXPECT_GT(ferr[1] / ferr[0], 0.3);
+    EXPECT_LT(ferr[1] / ferr[0], 0.65);
+    EXPECT_GT(derr[1] / derr[0], 0.3);
+    EXPECT_LT(derr[1] / derr[0], 0.65);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. Breaking bar: a 2D bar hanging from a clamp plate, released under gravity with no damping;
+//    critstretch 0.012 lies between the static stretch at mid-length (0.0089) and at the
+//    support (0.0179). Bonds break at the support first, the bar detaches and falls freely.
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+struct BarHistory {
+    double t_first_break = -1;   ///< first output with a broken bond
+    std::size_t first_broken = 0;
+    std::size_t first_not_near_clamp = 0;  ///< of those, bonds with no end in the top row
+    double t_detach = -1;        ///< first output with detached particles
+    std::vector<char> detached;  ///< the detached set then
+    double vz_detach = 0;        ///< its mean vertical velocity then
+    double t_end = 0, vz_end = 0;
+    std::size_t ndetached_end = 0;
+    double max_stretch_top = -1e300;  ///< largest stretch of intact bonds of the top row
+    bool finite = true;
+};
+
+BarHistory observeBar(const solver::SolverCase& c, const solver::SolidSetup& so, const std::string& kase,
+                      const std::string& outdir, int threads, solver::RunSummary* summary = nullptr) {
+    const std::uint32_t n = so.nsolid, first = so.first_solid;
+    const auto& p0 = c.particles.pos;
+    const double dp = c.constants.dp;
+    double zmax = -1e300;
+    for (std::uint32_t s = 0; s < n; ++s) zmax = std::max(zmax, p0[first + s].z);
+    std::vector<char> top(n, 0);
+    for (std::uint32_t s = 0; s < n; ++s) top[s] = p0[first + s].z > zmax - 0.25 * dp;
+    auto nearClamp = [&](std::uint32_t s, std::size_t k) {
+        if (so.flags[k] & physics::kBondClamp) return true;
+        return bool(top[s] || top[so.partner[k]]);
+    };
+    auto meanVz = [&](const solver::HostState& st, const std::vector<char>& set) {
+        double v = 0;
+        std::size_t m = 0;
+        for (std::uint32_t s = 0; s < n; ++s)
+            if (set[s]) {
+                v += st.solid_vel[s].z;
+                ++m;
+            }
+        return v / double(m);
+    };
+    BarHistory h;
+    // An output at every sub-step (TimeOut below the sub-step), so that the first broken bonds are
+    // seen in the sub-step that breaks them.
+    auto every_step = [](solver::RunOptions& o) { o.tout = 1e-4; };
+    const auto r = test::runCpu(kase, outdir, threads, every_step, [&](double t, long long, const solver::HostState& st) {
+        for (std::uint32_t s = 0; s < n; ++s) h.finite = h.finite && finite(st.pos[first + s]) && finite(st.solid_vel[s]);
+        h.max_stretch_top = std::max(h.max_stretch_top, maxStretch(so, st, top));
+        const std::size_t nb = brokenSlots(st);
+        if (nb > 0 && h.t_first_break < 0) {
+            h.t_first_break = t;
+            h.first_broken = nb;
+            for (std::uint32_t s = 0; s < n; ++s)
+                for (int q = 0; q < so.count[s]; ++q) {
+                    const std::size_t k = std::size_t(q) * n + s;
+                    if (st.bond_broken[k] && !nearClamp(s, k)) ++h.first_not_near_clamp;
+                }
+        }
+        if (nb > 0) {
+            std::vector<char> det = attachedToClamp(so, st.bond_broken);
+            std::size_t nd = 0;
+            for (char& a : det) {
+                a = !a;
+                nd += a;
+            }
+            if (nd > 0 && h.t_detach < 0) {
+                h.t_detach = t;
+                h.detached = det;
+                h.vz_detach = meanVz(st, det);
+            }
+            h.ndetached_end = nd;
+        }
+        if (h.t_detach >= 0) {
+            h.t_end = t;
+            h.vz_end = meanVz(st, h.detached);
+        }
+    });
+    if (summary) *summary = r.summary;
+    return h;
+}
+
+}  // namespace
+
+TEST(SolidSolver, BreakingBarBreaksAtTheSupportAndFallsFreely) {
+    const std::string dir = scratch("bar");
+    const std::string kase = test::generateCaseFile(dir, "bar", caseDef("breaking_bar/BreakingBar_Def.xml"));
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const solver::SolidSetup so = solver::makeSolidSetup(c);
+    ASSERT_EQ(so.nsolid, 240u);
+    ASSERT_EQ(so.materials.size(), 1u);
+    const double crit = so.materials[0].crit_stretch;
+    ASSERT_EQ(crit, 0.012);
+    solver::RunSummary sum;
+    const BarHistory h = observeBar(c, so, kase, dir + "/out", 2, &sum);
+    std::printf("breaking bar: first break at t = %.4f s (%zu slots, %zu not at the top row), detached at t = %.4f s "
+                "(%zu of %u particles at the end), broken bonds %llu; free fall from %.4f to %.4f s: a = %.9f m/s^2\n",
+                h.t_first_break, h.first_broken, h.first_not_near_clamp, h.t_detach, h.ndetached_end, so.nsolid,
+                (unsigned long long)sum.broken_bonds, h.t_detach, h.t_end,
+                (h.vz_end - h.vz_detach) / (h.t_end - h.t_detach));
+    EXPECT_GT(sum.broken_bonds, 0u);
+    EXPECT_EQ(sum.excluded_not_finite, 0u);
+    EXPECT_TRUE(h.finite);
+    // The first bonds to break are at the support: clamp bonds or bonds of the top row.
+    ASSERT_GT(h.t_first_break, 0.0);
+    EXPECT_GT(h.first_broken, 0u);
+    EXPECT_EQ(h.first_not_near_clamp, 0u);
+    // The undamped step load reaches crit at the support at t = crit c / g ~ 13 ms (c = 10.5 m/s,
+    // plane-strain bar speed); measured first break at 13.8 ms.
+    EXPECT_GT(h.t_first_break, 0.008);
+    EXPECT_LT(h.t_first_break, 0.020);
+    // The bar detaches (measured: 232 of 240 particles at t = 37 ms; the top row stays on the
+    // clamp) and the detached part falls freely: its momentum changes only by its weight.
+    ASSERT_GT(h.t_detach, 0.0);
+    EXPECT_GE(h.ndetached_end, std::size_t(0.9 * so.nsolid));
+    ASSERT_GT(h.t_end - h.t_detach, 0.05);
+    const double a = (h.vz_end - h.vz_detach) / (h.t_end - h.t_detach);
+    EXPECT_NEAR(a / -9.81, 1.0, 0.02);
+}
+
+TEST(SolidSolver, BreakingBarControlWithoutBreakageBreaksNothing) {
+    const std::string dir = scratch("bar0");
+    const std::string xml = replaceOnce(readFile(caseDef("breaking_bar/BreakingBar_Def.xml")), R"(critstretch="0.012")",
+                                        R"(critstretch="0")");
+    const std::string kase = test::generateCase(dir, "bar", xml);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const solver::SolidSetup so = solver::makeSolidSetup(c);
+    ASSERT_EQ(so.materials[0].crit_stretch, 0.0);
+    solver::RunSummary sum;
+    const BarHistory h = observeBar(c, so, kase, dir + "/out", 2, &sum);
+    std::printf("breaking bar control (critstretch 0): broken %llu, largest stretch at the top row %.4f\n",
+                (unsigned long long)sum.broken_bonds, h.max_stretch_top);
+    EXPECT_EQ(sum.broken_bonds, 0u);
+    EXPECT_LT(h.t_first_break, 0.0);
+    EXPECT_LT(h.t_detach, 0.0);
+    EXPECT_TRUE(h.finite);
+    // The stretch at the support does exceed 0.012 (so the breaking run breaks by the criterion):
+    // the undamped step load doubles the static support stretch rho g L (1 - nu^2)/E = 0.01785
+    // (measured largest 0.0361 = 1.011 x 2 x static).
+    EXPECT_GT(h.max_stretch_top, 0.012);
+    EXPECT_NEAR(h.max_stretch_top / (2 * 1000 * 9.81 * 0.2 * (1 - 0.09) / 1e5), 1.0, 0.1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. Thread-count parity with bonds breaking: the breaking bar (solid only) and a short coupled
+//    run of the hydrostatic plate with a low critstretch; a different critstretch changes the hash.
+// ---------------------------------------------------------------------------------------------
+
+TEST(SolidSolver, ThreadCountsGiveIdenticalHashesWithBreakage) {
+    {
+        const std::string dir = scratch("parity_bar");
+        const std::string kase = test::generateCaseFile(dir, "bar", caseDef("breaking_bar/BreakingBar_Def.xml"));
+        const auto r1 = test::runCpu(kase, dir + "/out1", 1);
+        const auto r2 = test::runCpu(kase, dir + "/out2", 2);
+        EXPECT_GT(r1.summary.broken_bonds, 0u);
+        EXPECT_EQ(r1.summary.broken_bonds, r2.summary.broken_bonds);
+        EXPECT_EQ(r1.state.bond_broken, r2.state.bond_broken);
+        EXPECT_EQ(r1.summary.state_hash, r2.summary.state_hash);
+        const std::string xml = replaceOnce(readFile(caseDef("breaking_bar/BreakingBar_Def.xml")),
+                                            R"(critstretch="0.012")", R"(critstretch="0.013")");
+        const std::string kase3 = test::generateCase(dir + "/c13", "bar", xml);
+        const auto r3 = test::runCpu(kase3, dir + "/out3", 2);
+        EXPECT_NE(r3.summary.state_hash, r1.summary.state_hash);
+    }
+    {
+        // The hydrostatic plate at dp 0.025 (plate 2 particles thick) with critstretch 3e-5: the
+        // bending stretch reaches 5e-5 in the first 30 steps; 26 bonds break within 80 steps.
+        const std::string base = readFile(caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"));
+        auto plate = [&](const char* crit) {
+            return replaceOnce(base, R"(poissratio="0.34")", std::string(R"(poissratio="0.34" critstretch=")") + crit + "\"");
+        };
+        const std::string dir = scratch("parity_plate");
+        const std::string kase = test::generateCase(dir + "/a", "plate", plate("3e-5"), 0.025);
+        auto steps = [](solver::RunOptions& o) { o.nsteps = 80; };
+        const auto r1 = test::runCpu(kase, dir + "/out1", 1, steps);
+        const auto r2 = test::runCpu(kase, dir + "/out2", 2, steps);
+        std::printf("coupled plate, critstretch 3e-5, 80 steps: %llu bonds broken, %lld solid sub-steps, hash %s\n",
+                    (unsigned long long)r1.summary.broken_bonds, r1.summary.solid_substeps, r1.summary.state_hash.c_str());
+        EXPECT_EQ(r1.summary.steps, 80);
+        EXPECT_GT(r1.summary.broken_bonds, 0u);
+        EXPECT_GT(r1.summary.solid_substeps, 80);
+        EXPECT_EQ(r1.summary.broken_bonds, r2.summary.broken_bonds);
+        EXPECT_EQ(r1.state.bond_broken, r2.state.bond_broken);
+        EXPECT_EQ(r1.summary.state_hash, r2.summary.state_hash);
+        const std::string kase3 = test::generateCase(dir + "/b", "plate", plate("4e-5"), 0.025);
+        const auto r3 = test::runCpu(kase3, dir + "/out3", 2, steps);
+        EXPECT_GT(r3.summary.broken_bonds, 0u);
+        EXPECT_NE(r3.summary.state_hash, r1.summary.state_hash);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. Coupling: the hydrodynamic force on the hydrostatic plate carries the weight of the water.
+// ---------------------------------------------------------------------------------------------
+
+TEST(SolidSolver, HydrostaticPlateCarriesTheWaterWeight) {
+    const std::string dir = scratch("plate_force");
+    const std::string kase =
+        test::generateCaseFile(dir, "plate", caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"), 0.025);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const double g = -c.constants.gravity.z;
+    const double column = 1000.0 * g * 2.0 * 1.0;                       // rho g H x 1 m [N/m]
+    const double water = double(c.nfluid) * c.constants.massfluid * g;  // the weight of the fluid particles
+    double sum_fz = 0, max_fx = 0, lo = 1e300, hi = -1e300;
+    int samples = 0;
+    const double t_from = 0.01;
+    const auto r = test::runCpu(
+        kase, dir + "/out", 2,
+        [](solver::RunOptions& o) {
+            o.tmax = 0.1;
+            o.tout = 0.0005;
+        },
+        [&](double t, long long, const solver::HostState& st) {
+            double fx = 0, fz = 0;
+            for (const physics::Double3& f : st.solid_force) {
+                fx += f.x;
+                fz += f.z;
+            }
+            if (t < t_from) return;
+            sum_fz += fz;
+            ++samples;
+            lo = std::min(lo, -fz);
+            hi = std::max(hi, -fz);
+            max_fx = std::max(max_fx, std::fabs(fx));
+        });
+    ASSERT_GT(samples, 50);
+    const double mean = -sum_fz / samples;
+    std::printf("hydrostatic plate dp 0.025, %lld steps to %.3f s: mean force on the plate from %.2f s %.1f N/m = "
+                "%.4f rho g H = %.4f water weight (%.1f N/m); range %.4f..%.4f of the water weight; |Fx| <= %.2e N/m\n",
+                r.summary.steps, r.summary.physical_time, t_from, mean, mean / column, mean / water, water,
+                lo / water, hi / water, max_fx);
+    EXPECT_EQ(r.summary.excluded_not_finite + r.summary.excluded_density + r.summary.excluded_position, 0u);
+    // The water's weight is carried by the plate and, near the bottom corners, by the side walls
+    // (DBC). The column rings acoustically (period 4H/c0 = 91 ms, +-25 % on the instantaneous
+    // force), so the force is averaged over one period, 10-100 ms: measured 0.991 of the water
+    // weight (0.966 rho g H: the fluid spans 1 - dp of the 1 m width); averaged over two and
+    // three periods 0.9955 and 0.9945, so the walls carry about 0.5 %.
+    EXPECT_NEAR(mean / water, 1.0, 0.03);
+    EXPECT_GT(lo / water, 0.6);
+    EXPECT_LT(hi / water, 1.4);
+    // Symmetric case: no net horizontal force.
+    EXPECT_LT(max_fx, 1e-4 * water);
+}
+
+// Disabled: exposes a growing oscillation of the coupled plate (reported to the lead engineer).
+// At dp 0.025 the mid-span deflection holds near -1.2e-4 m for 0.2 s, then a plate oscillation
+// near 1.06 kHz (about 11 fluid steps per period) grows, doubling every 50 ms at first, to
+// +-6.3e-4 m by 0.4-0.5 s (+-2e-4 m at dp 0.0125 by 0.5 s). It does not change with a 4 times
+// smaller solid sub-step (VcpmDtCoef 0.2) but nearly disappears with half the fluid step
+// (DtFixed 4e-5): the staggered coupling (the fluid sees the solid one step late) feeds energy
+// into the plate. Enable once fixed (9 s on 2 threads).
+TEST(SolidSolver, DISABLED_HydrostaticPlateStaysNearItsStaticDeflection) {
+    const std::string dir = scratch("plate_long");
+    const std::string kase =
+        test::generateCaseFile(dir, "plate", caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"), 0.025);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const std::uint32_t first = c.nfixed + c.nmoving, n = c.nsolid;
+    const double dp = c.constants.dp;
+    std::vector<std::uint32_t> mid;
+    for (std::uint32_t i = first; i < first + n; ++i)
+        if (std::fabs(c.particles.pos[i].x - 0.5) < 0.25 * dp) mid.push_back(i);
+    ASSERT_FALSE(mid.empty());
+    std::vector<double> ts, zs;
+    test::runCpu(
+        kase, dir + "/out", 2,
+        [](solver::RunOptions& o) {
+            o.tmax = 0.5;
+            o.tout = 0.0005;
+        },
+        [&](double t, long long, const solver::HostState& st) {
+            double u = 0;
+            for (std::uint32_t i : mid) u += st.pos[i].z - c.particles.pos[i].z;
+            ts.push_back(t);
+            zs.push_back(u / double(mid.size()));
+        });
+    double ref = 0, dev = 0;
+    int m = 0;
+    for (std::size_t k = 0; k < ts.size(); ++k)
+        if (ts[k] >= 0.05 && ts[k] <= 0.15) {
+            ref += zs[k];
+            ++m;
+        }
+    ref /= m;
+    for (std::size_t k = 0; k < ts.size(); ++k)
+        if (ts[k] >= 0.4) dev = std::max(dev, std::fabs(zs[k] - ref));
+    std::printf("hydrostatic plate dp 0.025: mid-span deflection %.3e m (50-150 ms), largest deviation from it "
+                "over 400-500 ms %.3e m\n", ref, dev);
+    EXPECT_LT(ref, 0.0);
+    EXPECT_LT(dev, 0.5 * std::fabs(ref));
+}
