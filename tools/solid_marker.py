@@ -40,7 +40,7 @@ def main():
         pos0 = f["pos"][:]
         solid = np.nonzero(f["type"][:] == 2)[0]
     d2 = ((pos0[solid] - point) ** 2).sum(axis=1)
-    pick = solid[np.argsort(d2)[: a.k]]
+    pick = np.sort(solid[np.argsort(d2)[: a.k]])
     rows = []
     for fn in files:
         with h5py.File(fn, "r") as f:

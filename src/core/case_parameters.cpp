@@ -61,6 +61,7 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"Symmetry", "0", K::Number, "symmetry plane y=0"},
         {"DivCleanKp", "0", K::Number, "divergence cleaning coefficient"},
         {"VcpmDtCoef", "0.8", K::Number, "VCPM solid sub-step = VcpmDtCoef*dp/c_S (SeaSpring)"},
+        {"VcpmCoupling", "2", K::Number, "VCPM coupling 1:staggered as seed 000, 2:staggered midpoint (SeaSpring)"},
     };
     return table;
 }

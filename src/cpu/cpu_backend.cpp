@@ -178,10 +178,16 @@ public:
             cpuSolidHydro_cubic(setup_.physics, a_, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
                                 setup_.grid);
     }
-    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) override {
+    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) override {
         if (solid_.empty()) return;
         solid_.steps(dt, n, motions);
-        solid_.toBoundary(dt * n, a_.pos.data(), a_.velrho.data());
+        solid_.toBoundary(dt * n, ledger, a_.pos.data(), a_.velrho.data());
+    }
+    void solidSave() override { solid_.save(); }
+    void solidRestore() override {
+        if (solid_.empty()) return;
+        solid_.restore();
+        solid_.toBoundary(0.0, false, a_.pos.data(), a_.velrho.data());
     }
 
     std::uint32_t activeFluid() const override { return nfluid_; }

@@ -121,14 +121,26 @@ void CpuSolid::steps(double dt, int n, const std::vector<physics::RigidMotionGpu
     }
 }
 
-void CpuSolid::toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho) {
+void CpuSolid::save() {
+    pos_saved_ = pos_;
+    vel_saved_ = vel_;
+    broken_saved_ = broken_;
+}
+
+void CpuSolid::restore() {
+    pos_ = pos_saved_;
+    vel_ = vel_saved_;
+    broken_ = broken_saved_;
+}
+
+void CpuSolid::toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho) {
     const std::uint32_t* slot = slot_.data();
     const physics::Double3 *p = pos_.data(), *v = vel_.data(), *f = fluid_force_.data();
     physics::Double3* imp = impulse_.data();
     double* work = work_.data();
 #pragma omp parallel for schedule(static)
     for (std::int64_t s = 0; s < std::int64_t(n_); ++s)
-        physics::solidToBoundaryAt(std::uint32_t(s), slot, p, v, f, dt, imp, work, bpos, bvelrho);
+        physics::solidToBoundaryAt(std::uint32_t(s), slot, p, v, f, dt, imp, work, ledger, bpos, bvelrho);
 }
 
 void CpuSolid::download(solver::HostState& out) const {

@@ -28,7 +28,9 @@ public:
     void steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
     /// Positions and velocities into the boundary block (sorted arrays) after a sub-cycle of
     /// length dt; accumulates the coupling ledger (impulse and work of the hydrodynamic force).
-    void toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho);
+    void toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho);
+    void save();
+    void restore();
     void download(solver::HostState& out) const;
 
 private:
@@ -48,6 +50,8 @@ private:
     std::vector<double> sum_;
     std::vector<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
     std::vector<double> work_;               ///< ledger: sum of F . dx per particle [J]
+    std::vector<physics::Double3> pos_saved_, vel_saved_;
+    std::vector<std::uint8_t> broken_saved_;
     std::vector<std::uint32_t> slot_;
     std::vector<std::uint8_t> clamp_count_;
     std::vector<std::uint32_t> clamp_partner_, clamp_slot_;

@@ -276,10 +276,16 @@ public:
             cudaSolidHydro_cubic(setup_.physics, a, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
                                  setup_.grid);
     }
-    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) override {
+    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) override {
         if (solid_.empty()) return;
         solid_.steps(dt, n, motions);
-        solid_.toBoundary(dt * n, pos_.data(), velrho_.data());
+        solid_.toBoundary(dt * n, ledger, pos_.data(), velrho_.data());
+    }
+    void solidSave() override { solid_.save(); }
+    void solidRestore() override {
+        if (solid_.empty()) return;
+        solid_.restore();
+        solid_.toBoundary(0.0, false, pos_.data(), velrho_.data());
     }
 
     std::uint32_t activeFluid() const override { return nfluid_; }

@@ -37,10 +37,10 @@ __global__ void slotKernel(std::uint32_t nbound, const std::uint32_t* id, std::u
 
 __global__ void toBoundaryKernel(std::uint32_t n, const std::uint32_t* slot, const physics::Double3* pos,
                                  const physics::Double3* vel, const physics::Double3* fluid_force, double dt,
-                                 physics::Double3* impulse, double* work, physics::Double3* bpos,
+                                 physics::Double3* impulse, double* work, bool ledger, physics::Double3* bpos,
                                  physics::Float4* bvelrho) {
     const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-    if (s < n) physics::solidToBoundaryAt(s, slot, pos, vel, fluid_force, dt, impulse, work, bpos, bvelrho);
+    if (s < n) physics::solidToBoundaryAt(s, slot, pos, vel, fluid_force, dt, impulse, work, ledger, bpos, bvelrho);
 }
 
 // ---- One kernel per pass (large solids) ---------------------------------------------------
@@ -257,10 +257,31 @@ void CudaSolid::stepsPerPass(double dt, int n) {
     }
 }
 
-void CudaSolid::toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho) {
+namespace {
+template <typename T>
+void copyDevice(DeviceBuffer<T>& dst, const DeviceBuffer<T>& src) {
+    dst.resize(src.size());
+    if (!src.empty())
+        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst.data(), src.data(), src.size() * sizeof(T), cudaMemcpyDeviceToDevice));
+}
+}  // namespace
+
+void CudaSolid::save() {
+    copyDevice(pos_saved_, pos_);
+    copyDevice(vel_saved_, vel_);
+    copyDevice(broken_saved_, broken_);
+}
+
+void CudaSolid::restore() {
+    copyDevice(pos_, pos_saved_);
+    copyDevice(vel_, vel_saved_);
+    copyDevice(broken_, broken_saved_);
+}
+
+void CudaSolid::toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho) {
     if (n_ == 0) return;
     toBoundaryKernel<<<blocksFor(n_), kThreads>>>(n_, slot_.data(), pos_.data(), vel_.data(), fluid_force_.data(),
-                                                   dt, impulse_.data(), work_.data(), bpos, bvelrho);
+                                                   dt, impulse_.data(), work_.data(), ledger, bpos, bvelrho);
     SEASPRING_CUDA_LAUNCH_CHECK();
 }
 

@@ -57,7 +57,10 @@ public:
     /// Positions and velocities into the boundary block (sorted device arrays) after a
     /// sub-cycle of length dt; accumulates the coupling ledger (impulse and work of the
     /// hydrodynamic force), as CpuSolid::toBoundary.
-    void toBoundary(double dt, physics::Double3* bpos, physics::Float4* bvelrho);
+    void toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho);
+    /// Device-to-device snapshot of positions, velocities and bond states, and back.
+    void save();
+    void restore();
     /// solid_vel, solid_force, bond_broken, solid_impulse, solid_work (the CPU's layouts).
     void download(solver::HostState& out) const;
 
@@ -79,6 +82,8 @@ private:
     DeviceBuffer<double> sum_;
     DeviceBuffer<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
     DeviceBuffer<double> work_;               ///< ledger: sum of F . dx per particle [J]
+    DeviceBuffer<physics::Double3> pos_saved_, vel_saved_;
+    DeviceBuffer<std::uint8_t> broken_saved_;
     DeviceBuffer<std::uint32_t> slot_;
     DeviceBuffer<std::uint8_t> clamp_count_;
     DeviceBuffer<std::uint32_t> clamp_partner_, clamp_slot_;

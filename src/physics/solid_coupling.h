@@ -79,15 +79,18 @@ SEASPRING_HD inline void solidSlotAt(std::uint32_t i, const std::uint32_t* id, s
 /// Copies the solid's position and velocity into the boundary block (sorted index of solid s)
 /// at the end of a sub-cycle of length dt, and adds to the coupling ledger of particle s the
 /// impulse F dt and the work F . (r_end - r_start) of the frozen hydrodynamic force F (the
-/// block still holds r_start).
+/// block still holds r_start). `ledger` false: copy only (a sub-cycle that will be redone).
 SEASPRING_HD inline void solidToBoundaryAt(std::uint32_t s, const std::uint32_t* slot, const Double3* pos,
                                            const Double3* vel, const Double3* fluid_force, double dt,
-                                           Double3* impulse, double* work, Double3* bpos, Float4* bvelrho) {
+                                           Double3* impulse, double* work, bool ledger, Double3* bpos,
+                                           Float4* bvelrho) {
     const std::uint32_t i = slot[s];
-    const Double3 p = pos[s], p0 = bpos[i], f = fluid_force[s];
-    const Double3 j = impulse[s];
-    impulse[s] = Double3{j.x + f.x * dt, j.y + f.y * dt, j.z + f.z * dt};
-    work[s] += f.x * (p.x - p0.x) + f.y * (p.y - p0.y) + f.z * (p.z - p0.z);
+    const Double3 p = pos[s];
+    if (ledger) {
+        const Double3 p0 = bpos[i], f = fluid_force[s], j = impulse[s];
+        impulse[s] = Double3{j.x + f.x * dt, j.y + f.y * dt, j.z + f.z * dt};
+        work[s] += f.x * (p.x - p0.x) + f.y * (p.y - p0.y) + f.z * (p.z - p0.z);
+    }
     bpos[i] = p;
     const Double3 v = vel[s];
     bvelrho[i].x = float(v.x);

@@ -82,8 +82,13 @@ public:
     /// VCPM solids: `n` sub-steps of `dt` with the hydrodynamic force held fixed; `motions`
     /// carries each motion object's pose at the start and the end of the n sub-steps (clamp
     /// nodes on moving boundaries move linearly in between). Then copies the solid positions
-    /// and velocities into the boundary block.
-    virtual void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) = 0;
+    /// and velocities into the boundary block; `ledger`: add the interval to the coupling
+    /// ledger (false for a sub-cycle that solidRestore will undo).
+    virtual void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) = 0;
+    /// Snapshot of the solid state (positions, velocities, bond states) ...
+    virtual void solidSave() = 0;
+    /// ... and back to it (the boundary block gets the restored positions and velocities).
+    virtual void solidRestore() = 0;
     /// Active fluid particles now.
     virtual std::uint32_t activeFluid() const = 0;
     /// Waits for queued device work (phase timers only; the CPU backend has none).

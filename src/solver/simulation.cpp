@@ -179,7 +179,12 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
         for (const std::string& l : setup_.solid.body_lines) log_ << "  " << l << "\n";
         log_ << "  VCPM sub-step " << setup_.solid.dt << " s (VcpmDtCoef " << c.params.vcpm_dt_coef
              << "), " << setup_.solid.bonds << " bonds, " << setup_.solid.clamp_bonds << " clamp bonds, "
-             << setup_.solid.nclamp << " clamp nodes" << (c.nfluid == 0 ? "; no fluid: solid only" : "") << "\n";
+             << setup_.solid.nclamp << " clamp nodes"
+             << (c.nfluid == 0 ? "; no fluid: solid only"
+                 : c.params.vcpm_coupling == 2 && c.params.step_algorithm == 2
+                     ? "; coupling: staggered midpoint (VcpmCoupling 2)"
+                     : "; coupling: staggered as seed 000 (VcpmCoupling 1)")
+             << "\n";
     }
 }
 
@@ -313,6 +318,7 @@ RunSummary Simulation::run() {
     double t_divide = 0, t_forces = 0, t_integrate = 0, t_other = 0, t_solid = 0;
     const bool solids = !setup_.solid.empty();
     const bool solid_only = solids && case_.nfluid == 0;
+    const bool midpoint = solids && !solid_only && symplectic && p.vcpm_coupling == 2;
     const double solid_dt = p.dt_fixed > 0 && solid_only ? std::min(p.dt_fixed, setup_.solid.dt) : setup_.solid.dt;
     bool clamp_moves = false;
     for (std::int16_t o : setup_.solid.clamp_object) clamp_moves = clamp_moves || o >= 0;
@@ -358,10 +364,22 @@ RunSummary Simulation::run() {
         if (symplectic) {
             dt = p.dt_fixed > 0 ? p.dt_fixed : dt_next;
             const double dtp = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+            if (midpoint) {
+                // Staggered midpoint: the solid goes to n+1/2 with the force of the fluid at n, so
+                // that the corrector's evaluation sees fluid and solid at n+1/2; then the solid
+                // restarts from n with that evaluation's force (below).
+                phase(t_solid, [&] {
+                    backend_->solidHydroForces();
+                    backend_->solidSave();
+                    advanceSolid(t, 0.5 * dt, false);
+                    return 0;
+                });
+            }
             predictor(dt);
             divide();
             const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
             if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
+            if (midpoint) phase(t_solid, [&] { backend_->solidRestore(); return 0; });
             corrector(dt);
             dt_next = std::min(dtp, dtc);
         } else {

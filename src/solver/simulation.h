@@ -65,7 +65,7 @@ private:
     /// Motion objects' poses at `time` and `time + interval`.
     std::vector<physics::RigidMotionGpu> motionsOver(double time, double interval) const;
     /// The solid sub-cycle of one fluid step [time, time + dt_fluid] (no-op without solids).
-    void advanceSolid(double time, double dt_fluid);
+    void advanceSolid(double time, double dt_fluid, bool ledger = true);
     /// Solid-only cases: `n` solid sub-steps from `time`.
     void solidOnlySteps(double time, long long n, double dt);
     /// Broken bonds (each solid-solid bond counted once) in `st`.

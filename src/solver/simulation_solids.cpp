@@ -20,16 +20,16 @@ std::uint64_t Simulation::brokenBonds(const HostState& st) const {
 void Simulation::solidOnlySteps(double time, long long n, double dt) {
     while (n > 0) {
         const int chunk = int(std::min<long long>(n, 1 << 30));
-        backend_->solidSteps(dt, chunk, motionsOver(time, dt * chunk));
+        backend_->solidSteps(dt, chunk, motionsOver(time, dt * chunk), true);
         time += dt * chunk;
         n -= chunk;
     }
 }
 
-void Simulation::advanceSolid(double time, double dt_fluid) {
+void Simulation::advanceSolid(double time, double dt_fluid, bool ledger) {
     if (setup_.solid.empty()) return;
     const int omega = physics::solidSubsteps(dt_fluid, setup_.solid.dt);
-    backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid));
+    backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
     sum_.solid_substeps += omega;
     sum_.omega_max = std::max(sum_.omega_max, omega);
 }

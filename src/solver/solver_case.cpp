@@ -156,6 +156,7 @@ SolverParameters readParameters(const ParameterTable& t) {
     p.dt_all_particles = t.choice("DtAllParticles", {0}, "0, dt from the fluid particles") != 0;
     p.time_max = t.atLeast("TimeMax", 0, false);
     p.vcpm_dt_coef = t.atLeast("VcpmDtCoef", 0, false);
+    p.vcpm_coupling = t.choice("VcpmCoupling", {1, 2}, "1 staggered as seed 000, 2 staggered midpoint");
     if (p.vcpm_dt_coef > 2) t.fail("VcpmDtCoef", "must be <= 2 (the lattice is unstable far below that; 0.8 is safe for nu >= 0)");
     p.time_out = t.atLeast("TimeOut", 0, false);
     if (t.number("TimeOutExtra") > 0)

@@ -55,6 +55,7 @@ struct SolverParameters {
     double wrn_parts_out = 1;   ///< warn when more than this % of the fluid is excluded
     double cfl_number = 0.2;    ///< from <constants><cflnumber>
     double vcpm_dt_coef = 0.8;  ///< VCPM sub-step = this * dp / c_S (SeaSpring's VcpmDtCoef)
+    int vcpm_coupling = 2;      ///< 1: seed 000's staggered scheme; 2: staggered midpoint (symplectic only)
 };
 
 /// One `<vcpmsolids><solid>` body of the resolved case: a boundary MK modelled as a VCPM
