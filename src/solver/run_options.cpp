@@ -98,6 +98,8 @@ void declareOptions(CLI::App& app) {
     optional("--svres");
     value("--nsteps");
     value("--cellmode");
+    value("--vcpmsubsteps");
+    value("--vcpmcoupling");
     value("--progress");
     flag("--quiet");
     CLI::Option* verlet = optional("--verlet");
@@ -205,6 +207,10 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (g.value != "full" && g.value != "h" && g.value != "third")
                 usageError(g.arg + ": \"" + g.value + "\" is not a cell mode (supported: full, h, third)");
             o.cell_div = g.value == "full" ? 1 : (g.value == "h" ? 2 : 3);
+        } else if (name == "vcpmsubsteps") {
+            o.solid_substeps = int(toInteger(g, 0, 1000000));
+        } else if (name == "vcpmcoupling") {
+            o.vcpm_coupling = int(toInteger(g, 1, 2));
         } else if (name == "progress") {
             o.progress_interval = toDouble(g, Range::NonNegative);
         } else if (name == "quiet") {
@@ -295,6 +301,9 @@ Run control:
   -svres[:0|1]         accepted for DualSPHysics command lines; run.json is always written
   -cellmode:full|h|third  neighbour cells of size 2h (full), h (h, the default) or
                        2h/3 (third, SeaSpring's: fewer candidates, more rows)
+  -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of
+                       int(dt_F/dt_S)+1 (convergence studies; 0: automatic). The solid
+                       is unstable when dt_F/N exceeds its stability limit
   -progress:S          a progress line every S >= 0 seconds of wall time (default 1; 0: none)
   -quiet               no banner or progress lines (summary and errors only)
 Physics (override the case's <parameters>):
@@ -311,6 +320,8 @@ Physics (override the case's <parameters>):
   -ddtvalue:D          density diffusion coefficient delta D >= 0 (DensityDTvalue)
   -cfl:C               Courant number, 0 < C <= 1 (the case's cflnumber)
   -dtfixed:DT          constant time step DT > 0 [s] (DtFixed)
+  -vcpmcoupling:K      VCPM coupling: 1 staggered as seed 000, 2 staggered midpoint
+                       (VcpmCoupling, SeaSpring)
 Other:
   -h, -help, --help    this text
   -version             the version
@@ -325,6 +336,7 @@ Exit codes: 0 success, 2 bad command line or input, 1 failure during the run.
 
 void applyOverrides(const RunOptions& o, SolverParameters& p) {
     if (o.step_algorithm) p.step_algorithm = *o.step_algorithm;
+    if (o.vcpm_coupling) p.vcpm_coupling = *o.vcpm_coupling;
     if (o.verlet_steps) p.verlet_steps = *o.verlet_steps;
     if (o.kernel) p.kernel = *o.kernel;
     if (o.visco_treatment) p.visco_treatment = *o.visco_treatment;

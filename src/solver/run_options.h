@@ -30,6 +30,8 @@ struct RunOptions {
     std::optional<int> step_algorithm, verlet_steps, kernel, visco_treatment, ddt;
     std::optional<long long> nsteps;  ///< stop after this many steps
     int cell_div = 2;  ///< cells of 2h/cell_div: 1 -cellmode:full, 2 -cellmode:h, 3 -cellmode:third
+    int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
+    std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
     double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none
     bool quiet = false;
     bool help = false, version = false;  ///< set alone: the rest is not parsed

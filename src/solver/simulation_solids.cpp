@@ -28,7 +28,7 @@ void Simulation::solidOnlySteps(double time, long long n, double dt) {
 
 void Simulation::advanceSolid(double time, double dt_fluid, bool ledger) {
     if (setup_.solid.empty()) return;
-    const int omega = physics::solidSubsteps(dt_fluid, setup_.solid.dt);
+    const int omega = opt_.solid_substeps > 0 ? opt_.solid_substeps : physics::solidSubsteps(dt_fluid, setup_.solid.dt);
     backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
     sum_.solid_substeps += omega;
     sum_.omega_max = std::max(sum_.omega_max, omega);
