@@ -178,9 +178,10 @@ public:
             cpuSolidHydro_cubic(setup_.physics, a_, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
                                 setup_.grid);
     }
-    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) override {
+    void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
+                    bool ledger) override {
         if (solid_.empty()) return;
-        solid_.steps(dt, n, motions);
+        solid_.steps(t0, dt, n, motions);
         solid_.toBoundary(dt * n, ledger, a_.pos.data(), a_.velrho.data());
     }
     void solidSave() override { solid_.save(); }

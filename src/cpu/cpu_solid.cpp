@@ -40,6 +40,8 @@ void CpuSolid::init(const solver::SolidSetup& s, const physics::StepConstants& s
     clamp_end_ = s.clamp_pos;
     clamp_object_ = s.clamp_object;
     clamp_sum_.assign(nclamp_, 0.0);
+    load_force_ = s.load_force;
+    load_rate_ = s.load_rate;
 }
 
 physics::SolidState CpuSolid::state() {
@@ -52,6 +54,10 @@ physics::SolidState CpuSolid::state() {
     st.fluid_force = fluid_force_.data();
     st.body = body_.data();
     st.material = materials_.data();
+    st.load_force = load_force_.empty() ? nullptr : load_force_.data();
+    st.load_rate = load_rate_.empty() ? nullptr : load_rate_.data();
+    st.t0 = t0_;
+    st.span = span_;
     return st;
 }
 
@@ -97,8 +103,10 @@ void CpuSolid::evaluationSums(const physics::Double3* ep, double f) {
         cn.sum[c] = physics::clampSumAt(std::uint32_t(c), ep, b, cn, f);
 }
 
-void CpuSolid::steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
+void CpuSolid::steps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
     if (n_ == 0 || n <= 0) return;
+    t0_ = t0;
+    span_ = dt * double(n);
     for (std::uint32_t c = 0; c < nclamp_; ++c)
         physics::clampMotionAt(c, clamp_pos_initial_.data(), clamp_object_.data(), motions.data(),
                                clamp_start_.data(), clamp_end_.data());

@@ -25,7 +25,7 @@ public:
     physics::Double3* fluidForce() { return fluid_force_.data(); }
 
     /// n sub-steps of dt (clamp nodes moved by `motions` over the whole interval).
-    void steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
+    void steps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
     /// Positions and velocities into the boundary block (sorted arrays) after a sub-cycle of
     /// length dt; accumulates the coupling ledger (impulse and work of the hydrodynamic force).
     void toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho);
@@ -51,6 +51,8 @@ private:
     std::vector<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
     std::vector<double> work_;               ///< ledger: sum of F . dx per particle [J]
     std::vector<physics::Double3> pos_saved_, vel_saved_;
+    std::vector<physics::Double3> load_force_, load_rate_;  ///< empty without point loads
+    double t0_ = 0, span_ = 0;
     std::vector<std::uint8_t> broken_saved_;
     std::vector<std::uint32_t> slot_;
     std::vector<std::uint8_t> clamp_count_;

@@ -276,9 +276,10 @@ public:
             cudaSolidHydro_cubic(setup_.physics, a, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
                                  setup_.grid);
     }
-    void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) override {
+    void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
+                    bool ledger) override {
         if (solid_.empty()) return;
-        solid_.steps(dt, n, motions);
+        solid_.steps(t0, dt, n, motions);
         solid_.toBoundary(dt * n, ledger, pos_.data(), velrho_.data());
     }
     void solidSave() override { solid_.save(); }

@@ -156,6 +156,8 @@ void CudaSolid::init(const solver::SolidSetup& s, const physics::StepConstants& 
     clamp_end_.upload(s.clamp_pos);
     clamp_object_.upload(s.clamp_object);
     zeros(clamp_sum_, nclamp_, 0.0);
+    load_force_.upload(s.load_force);
+    load_rate_.upload(s.load_rate);
 }
 
 physics::SolidState CudaSolid::state() const {
@@ -168,6 +170,10 @@ physics::SolidState CudaSolid::state() const {
     st.fluid_force = fluid_force_.data();
     st.body = body_.data();
     st.material = materials_.data();
+    st.load_force = load_force_.empty() ? nullptr : load_force_.data();
+    st.load_rate = load_rate_.empty() ? nullptr : load_rate_.data();
+    st.t0 = t0_;
+    st.span = span_;
     return st;
 }
 
@@ -200,8 +206,10 @@ void CudaSolid::updateSlots(const std::uint32_t* id, std::uint32_t nbound) {
     SEASPRING_CUDA_LAUNCH_CHECK();
 }
 
-void CudaSolid::steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
+void CudaSolid::steps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
     if (n_ == 0 || n <= 0) return;
+    t0_ = t0;
+    span_ = dt * double(n);
     ClampMotion cm;
     cm.pos_initial = clamp_pos_initial_.data();
     cm.object = clamp_object_.data();

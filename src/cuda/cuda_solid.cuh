@@ -53,7 +53,7 @@ public:
     physics::Double3* fluidForce() { return fluid_force_.data(); }
 
     /// n sub-steps of dt (clamp nodes moved by `motions` over the whole interval).
-    void steps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
+    void steps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
     /// Positions and velocities into the boundary block (sorted device arrays) after a
     /// sub-cycle of length dt; accumulates the coupling ledger (impulse and work of the
     /// hydrodynamic force), as CpuSolid::toBoundary.
@@ -83,6 +83,8 @@ private:
     DeviceBuffer<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
     DeviceBuffer<double> work_;               ///< ledger: sum of F . dx per particle [J]
     DeviceBuffer<physics::Double3> pos_saved_, vel_saved_;
+    DeviceBuffer<physics::Double3> load_force_, load_rate_;  ///< empty without point loads
+    double t0_ = 0, span_ = 0;
     DeviceBuffer<std::uint8_t> broken_saved_;
     DeviceBuffer<std::uint32_t> slot_;
     DeviceBuffer<std::uint8_t> clamp_count_;

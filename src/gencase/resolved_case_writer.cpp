@@ -71,6 +71,18 @@ void appendSolids(pugi::xml_node exec, const GeneratedCase& g) {
         n.append_attribute("critstretch") = fmt(s.critstretch).c_str();
         n.append_attribute("damping") = fmt(s.damping).c_str();
         n.append_attribute("declaredin") = s.declared_in.c_str();
+        for (const PointLoad& l : s.loads) {
+            pugi::xml_node p = n.append_child("pointload");
+            p.append_attribute("x") = fmt(l.x).c_str();
+            p.append_attribute("y") = fmt(l.y).c_str();
+            p.append_attribute("z") = fmt(l.z).c_str();
+            p.append_attribute("fx") = fmt(l.fx).c_str();
+            p.append_attribute("fy") = fmt(l.fy).c_str();
+            p.append_attribute("fz") = fmt(l.fz).c_str();
+            p.append_attribute("ratex") = fmt(l.ratex).c_str();
+            p.append_attribute("ratey") = fmt(l.ratey).c_str();
+            p.append_attribute("ratez") = fmt(l.ratez).c_str();
+        }
         const auto it = g.bond_stats.particles_per_mk.find(s.mk);
         n.append_attribute("particles") =
             std::to_string(it == g.bond_stats.particles_per_mk.end() ? 0 : it->second).c_str();

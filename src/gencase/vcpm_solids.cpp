@@ -93,6 +93,22 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
             s.poissratio = src.number(n, "poissratio", ev);
             s.critstretch = src.number(n, "critstretch", ev, 0.0);
             s.damping = src.number(n, "damping", ev, 0.0);
+            src.checkChildren(n, {"pointload"});
+            for (pugi::xml_node l : n.children("pointload")) {
+                src.checkAttributes(l, {"x", "y", "z", "fx", "fy", "fz", "ratex", "ratey", "ratez"});
+                PointLoad p;
+                p.line = src.lineOf(l);
+                p.x = src.number(l, "x", ev);
+                p.y = src.number(l, "y", ev);
+                p.z = src.number(l, "z", ev);
+                p.fx = src.number(l, "fx", ev, 0.0);
+                p.fy = src.number(l, "fy", ev, 0.0);
+                p.fz = src.number(l, "fz", ev, 0.0);
+                p.ratex = src.number(l, "ratex", ev, 0.0);
+                p.ratey = src.number(l, "ratey", ev, 0.0);
+                p.ratez = src.number(l, "ratez", ev, 0.0);
+                s.loads.push_back(p);
+            }
             validate(src, n, s, mk);
             solids.push_back(s);
         }

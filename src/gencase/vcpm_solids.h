@@ -18,6 +18,15 @@
 
 namespace seaspring::gencase {
 
+/// A concentrated force on the solid particle nearest to `point` (initial configuration):
+/// F(t) = force + rate * t [N] (2D: N per m of thickness).
+struct PointLoad {
+    double x = 0, y = 0, z = 0;
+    double fx = 0, fy = 0, fz = 0;
+    double ratex = 0, ratey = 0, ratez = 0;
+    int line = 0;
+};
+
 struct SolidSpec {
     int mkbound = 0;
     std::uint16_t mk = 0;                 ///< global MK
@@ -30,6 +39,7 @@ struct SolidSpec {
     double damping = 0;                   ///< multiplies sqrt(E/(rho dp^2)); 0: no damping
     int line = 0;
     std::string declared_in;              ///< "vcpmsolids" or "flexstrucs"
+    std::vector<PointLoad> loads;         ///< <pointload> children
 };
 
 /// Reads `<vcpmsolids>` and `<flexstrucs>` inside `<special>` (either may be absent).

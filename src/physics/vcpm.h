@@ -156,7 +156,19 @@ struct SolidState {
     const Double3* fluid_force = nullptr;  ///< hydrodynamic force F_F->S, frozen over the sub-cycle [N]
     const std::uint16_t* body = nullptr;   ///< material index
     const VcpmMaterial* material = nullptr;
+    /// Point loads (nullptr when the case has none): F(t) = load_force + load_rate t [N].
+    const Double3* load_force = nullptr;
+    const Double3* load_rate = nullptr;
+    double t0 = 0, span = 0;  ///< the sub-cycle's start time and length: t = t0 + f span
 };
+
+/// The point load on solid particle s at time fraction f of the sub-cycle (0 without loads).
+SEASPRING_HD inline Double3 pointLoadAt(const SolidState& st, std::uint32_t s, double f) {
+    if (!st.load_force) return Double3{0, 0, 0};
+    const double t = st.t0 + f * st.span;
+    const Double3 a = st.load_force[s], r = st.load_rate[s];
+    return Double3{a.x + r.x * t, a.y + r.y * t, a.z + r.z * t};
+}
 
 /// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
 /// its bonds (the partner decides the mirror slot with the same bits) and returns
@@ -241,7 +253,8 @@ SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double
 SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
                                           const ClampNodes& cn, double f, double dt, double gx, double gy,
                                           double gz) {
-    const Double3 fb = solidBondForceAt(s, st.pos, st, b, cn, f);
+    const Double3 fi = solidBondForceAt(s, st.pos, st, b, cn, f), fl = pointLoadAt(st, s, f);
+    const Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
     const Double3 v = st.vel[s], p = st.pos[s];
     const Double3 a = solidAcceleration(fb, st.fluid_force[s], v, st.material[st.body[s]], gx, gy, gz);
     const double dth = 0.5 * dt;
@@ -255,7 +268,8 @@ SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st,
 SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
                                           const ClampNodes& cn, double f, double dt, double gx, double gy,
                                           double gz) {
-    const Double3 fb = solidBondForceAt(s, st.pos_half, st, b, cn, f);
+    const Double3 fi = solidBondForceAt(s, st.pos_half, st, b, cn, f), fl = pointLoadAt(st, s, f);
+    const Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
     const Double3 a = solidAcceleration(fb, st.fluid_force[s], st.vel[s], st.material[st.body[s]], gx, gy, gz);
     const Double3 v0 = st.vel0[s], p0 = st.pos[s];
     const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};

@@ -79,12 +79,13 @@ public:
     /// VCPM solids: the hydrodynamic force on every solid particle (Eq. 16) from the state of
     /// the last force evaluation (call it after computeForces, before the integration).
     virtual void solidHydroForces() = 0;
-    /// VCPM solids: `n` sub-steps of `dt` with the hydrodynamic force held fixed; `motions`
+    /// VCPM solids: `n` sub-steps of `dt` from time t0 with the hydrodynamic force held fixed; `motions`
     /// carries each motion object's pose at the start and the end of the n sub-steps (clamp
     /// nodes on moving boundaries move linearly in between). Then copies the solid positions
     /// and velocities into the boundary block; `ledger`: add the interval to the coupling
     /// ledger (false for a sub-cycle that solidRestore will undo).
-    virtual void solidSteps(double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) = 0;
+    virtual void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
+                            bool ledger) = 0;
     /// Snapshot of the solid state (positions, velocities, bond states) ...
     virtual void solidSave() = 0;
     /// ... and back to it (the boundary block gets the restored positions and velocities).

@@ -20,7 +20,7 @@ std::uint64_t Simulation::brokenBonds(const HostState& st) const {
 void Simulation::solidOnlySteps(double time, long long n, double dt) {
     while (n > 0) {
         const int chunk = int(std::min<long long>(n, 1 << 30));
-        backend_->solidSteps(dt, chunk, motionsOver(time, dt * chunk), true);
+        backend_->solidSteps(time, dt, chunk, motionsOver(time, dt * chunk), true);
         time += dt * chunk;
         n -= chunk;
     }
@@ -29,7 +29,7 @@ void Simulation::solidOnlySteps(double time, long long n, double dt) {
 void Simulation::advanceSolid(double time, double dt_fluid, bool ledger) {
     if (setup_.solid.empty()) return;
     const int omega = opt_.solid_substeps > 0 ? opt_.solid_substeps : physics::solidSubsteps(dt_fluid, setup_.solid.dt);
-    backend_->solidSteps(dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
+    backend_->solidSteps(time, dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
     sum_.solid_substeps += omega;
     sum_.omega_max = std::max(sum_.omega_max, omega);
 }

@@ -69,6 +69,38 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         s.mass[k] = sb.density * dp * dp * (dim == 3 ? dp : 1.0);
     }
 
+    // Point loads: on the particle of the body nearest to the point (initial positions).
+    for (std::size_t b = 0; b < c.solids.size(); ++b)
+        for (const SolidBody::Load& l : c.solids[b].loads) {
+            std::uint32_t best = n;
+            double best_d2 = 0;
+            for (std::uint32_t k = 0; k < n; ++k) {
+                if (s.body[k] != b) continue;
+                const double dx = s.pos[k].x - l.point.x, dy = s.pos[k].y - l.point.y, dz = s.pos[k].z - l.point.z;
+                const double d2 = dx * dx + dy * dy + dz * dz;
+                if (best == n || d2 < best_d2) {
+                    best = k;
+                    best_d2 = d2;
+                }
+            }
+            if (best == n)
+                throwInputError(c.xml_path, l.line, "<pointload>: solid mkbound=" + std::to_string(c.solids[b].mkbound) +
+                                                         " has no particles");
+            if (s.load_force.empty()) {
+                s.load_force.assign(n, physics::Double3{0, 0, 0});
+                s.load_rate.assign(n, physics::Double3{0, 0, 0});
+            }
+            physics::Double3& f = s.load_force[best];
+            physics::Double3& r = s.load_rate[best];
+            f = physics::Double3{f.x + l.force.x, f.y + l.force.y, f.z + l.force.z};
+            r = physics::Double3{r.x + l.rate.x, r.y + l.rate.y, r.z + l.rate.z};
+            s.load_particles.push_back(best);
+            s.body_lines.push_back("point load on solid particle " + std::to_string(first + best) + " at (" +
+                                   fmtg(s.pos[best].x) + ", " + fmtg(s.pos[best].y) + ", " + fmtg(s.pos[best].z) +
+                                   "): F = (" + fmtg(l.force.x) + ", " + fmtg(l.force.y) + ", " + fmtg(l.force.z) +
+                                   ") + (" + fmtg(l.rate.x) + ", " + fmtg(l.rate.y) + ", " + fmtg(l.rate.z) + ") t N");
+        }
+
     // Moving boundary ids -> motion object (for clamp nodes on a moving boundary).
     std::map<std::uint32_t, std::int16_t> object_of_id;
     for (const MkBlock& blk : c.blocks) {

@@ -29,6 +29,9 @@ struct SolidSetup {
     std::vector<physics::VcpmMaterial> materials;
     std::vector<physics::Double3> pos, vel;  ///< initial state [nsolid]
     std::vector<double> mass;                ///< [nsolid] rho_S dp^D (reports)
+    /// Point loads per particle, F = load_force + load_rate t (both empty without loads).
+    std::vector<physics::Double3> load_force, load_rate;
+    std::vector<std::uint32_t> load_particles;  ///< solid index of each <pointload>
 
     std::uint32_t nclamp = 0;
     int clamp_max = 0;                       ///< slots per clamp node

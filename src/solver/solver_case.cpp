@@ -376,6 +376,23 @@ void checkSolids(const XmlSource& src, pugi::xml_node exec, SolverCase& c,
             src.fail(s, "poissratio=\"" + num(b.poissratio) + "\": must lie in (-1, 0.5)");
         if (!(b.critstretch >= 0)) src.fail(s, "critstretch=\"" + num(b.critstretch) + "\": must be >= 0");
         if (!(b.damping >= 0)) src.fail(s, "damping=\"" + num(b.damping) + "\": must be >= 0");
+        src.checkChildren(s, {"pointload"});
+        for (pugi::xml_node l : s.children("pointload")) {
+            src.checkAttributes(l, {"x", "y", "z", "fx", "fy", "fz", "ratex", "ratey", "ratez"});
+            auto lnum = [&](const char* attr) {
+                try {
+                    return gencase::parseNumber(src.text(l, attr));
+                } catch (const std::exception& e) {
+                    src.fail(l, std::string(attr) + "=\"" + l.attribute(attr).value() + "\": " + e.what());
+                }
+            };
+            SolidBody::Load load;
+            load.line = src.lineOf(l);
+            load.point = Vec3d{lnum("x"), lnum("y"), lnum("z")};
+            load.force = Vec3d{lnum("fx"), lnum("fy"), lnum("fz")};
+            load.rate = Vec3d{lnum("ratex"), lnum("ratey"), lnum("ratez")};
+            b.loads.push_back(load);
+        }
         const std::string clamps = s.attribute("mkclamp").value();
         std::size_t from = 0;
         while (from < clamps.size()) {

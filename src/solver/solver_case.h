@@ -67,6 +67,12 @@ struct SolidBody {
     double density = 0, youngmod = 0, poissratio = 0;  ///< [kg/m^3], [Pa], [-]
     double critstretch = 0;               ///< relative bond elongation at breakage (0: never)
     double damping = 0;                   ///< multiplies sqrt(E/(rho dp^2)) (0: none)
+    /// <pointload>: F(t) = force + rate t on the solid particle nearest to point [N].
+    struct Load {
+        Vec3d point{0, 0, 0}, force{0, 0, 0}, rate{0, 0, 0};
+        int line = 0;
+    };
+    std::vector<Load> loads;
     int line = 0;                         ///< line in the resolved XML
 };
 
