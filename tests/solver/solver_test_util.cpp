@@ -2,6 +2,11 @@
 /// \file solver_test_util.cpp
 #include "solver_test_util.h"
 
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +19,37 @@
 namespace seaspring::test {
 
 namespace fs = std::filesystem;
+
+std::string scratch(const std::string& tag) {
+    return ::testing::TempDir() + "seaspring_" + tag + "_" + std::to_string(::getpid());
+}
+
+std::string caseDef(const std::string& rel) { return std::string(SEASPRING_SOURCE_DIR) + "/cases/" + rel; }
+
+std::string readFile(const std::string& path) {
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t k = text.find(from);
+    EXPECT_NE(k, std::string::npos) << "'" << from << "' not found";
+    EXPECT_EQ(text.find(from, k + 1), std::string::npos) << "'" << from << "' found twice";
+    if (k != std::string::npos) text.replace(k, from.size(), to);
+    return text;
+}
+
+double dist(const physics::Double3& a, const physics::Double3& b) {
+    return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+bool finite(const physics::Double3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+
+std::size_t brokenSlots(const solver::HostState& st) {
+    return std::size_t(std::count_if(st.bond_broken.begin(), st.bond_broken.end(), [](std::uint8_t b) { return b != 0; }));
+}
 
 std::string generateCaseFile(const std::string& dir, const std::string& name, const std::string& def_path,
                              double dp) {

@@ -12,6 +12,20 @@
 
 namespace seaspring::test {
 
+/// A scratch directory for one test: TempDir()/seaspring_TAG_PID.
+std::string scratch(const std::string& tag);
+/// SEASPRING_SOURCE_DIR/cases/REL (a case definition shipped with the sources).
+std::string caseDef(const std::string& rel);
+/// The whole file (empty when it cannot be read).
+std::string readFile(const std::string& path);
+/// `text` with the one occurrence of `from` replaced (fails the test when it is not there once).
+std::string replaceOnce(std::string text, const std::string& from, const std::string& to);
+
+double dist(const physics::Double3& a, const physics::Double3& b);
+bool finite(const physics::Double3& a);
+/// Broken bond slots of a state (a solid-solid bond counts at both ends).
+std::size_t brokenSlots(const solver::HostState& st);
+
 /// Writes `def_xml` to dir/NAME_Def.xml, runs gencase (optionally with -dp) and returns
 /// dir/NAME (the path seaspring takes). Fails the test (throws) when gencase fails.
 std::string generateCase(const std::string& dir, const std::string& name, const std::string& def_xml,
