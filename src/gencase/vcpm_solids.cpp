@@ -82,7 +82,7 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
         src.checkAttributes(v, {});
         for (pugi::xml_node n : v.children("solid")) {
             src.checkAttributes(n, {"mkbound", "mkclamp", "density", "youngmod", "poissratio",
-                                    "critstretch", "damping"});
+                                    "critstretch", "tensilestrength", "damping"});
             SolidSpec s;
             s.line = src.lineOf(n);
             s.declared_in = "vcpmsolids";
@@ -92,6 +92,19 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
             s.youngmod = src.number(n, "youngmod", ev);
             s.poissratio = src.number(n, "poissratio", ev);
             s.critstretch = src.number(n, "critstretch", ev, 0.0);
+            if (n.attribute("tensilestrength")) {
+                // Seed 000, Eq. A1 (after Chen & Liu 2016): critical elongation
+                // alpha = 1.25 sigma_T (1 + nu) / (2E) of the bond's rest length.
+                if (n.attribute("critstretch"))
+                    src.fail(n, "give either critstretch or tensilestrength, not both");
+                const double sigma = src.number(n, "tensilestrength", ev);
+                if (!(sigma > 0))
+                    src.fail(n, "tensilestrength=\"" + std::string(n.attribute("tensilestrength").value()) +
+                                    "\": must be > 0 [Pa]");
+                s.critstretch = 1.25 * sigma * (1.0 + s.poissratio) / (2.0 * s.youngmod);
+                log << "Note: " << src.where(n) << ": tensilestrength " << sigma
+                    << " Pa gives critstretch 1.25 sigma_T (1+nu)/(2E) = " << s.critstretch << "\n";
+            }
             s.damping = src.number(n, "damping", ev, 0.0);
             src.checkChildren(n, {"pointload"});
             for (pugi::xml_node l : n.children("pointload")) {
