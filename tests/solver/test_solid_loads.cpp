@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "solver/solver_case.h"
 #include "solver_test_util.h"
 
 using namespace seaspring;
@@ -95,5 +96,28 @@ TEST(SolidLoads, BadPointLoadIsAnInputError) {
         const std::string msg = e.what();
         EXPECT_NE(msg.find("fq"), std::string::npos) << msg;
         EXPECT_NE(msg.find("Bad_Def.xml:"), std::string::npos) << msg;
+    }
+}
+
+// tensilestrength sets the critical stretch of seed 000's Eq. A1; with critstretch too it is an
+// error naming the line.
+TEST(SolidLoads, TensileStrengthGivesTheSeedCriticalStretch) {
+    const std::string dir = scratch("sigma");
+    std::string def = freeBlock("");
+    const std::string solid = R"(<solid mkbound="1" density="7800" youngmod="2e8" poissratio="0.3">)";
+    def.replace(def.find(solid), solid.size(),
+                R"(<solid mkbound="1" density="7800" youngmod="2e8" poissratio="0.3" tensilestrength="48e6">)");
+    const std::string kase = test::generateCase(dir, "Sigma", def);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    ASSERT_EQ(c.solids.size(), 1u);
+    EXPECT_NEAR(c.solids[0].critstretch, 1.25 * 48e6 * 1.3 / (2 * 2e8), 1e-12);
+    std::string both = def;
+    both.replace(both.find("tensilestrength"), 0, "critstretch=\"0.01\" ");
+    try {
+        test::generateCase(dir, "Both", both);
+        FAIL() << "gencase accepted critstretch and tensilestrength together";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("Both_Def.xml:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("not both"), std::string::npos) << e.what();
     }
 }
