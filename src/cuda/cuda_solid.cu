@@ -118,104 +118,30 @@ std::uint32_t blockPathMax() {
     return (*end == '\0') ? std::uint32_t(std::min<unsigned long>(v, 0xffffffffUL)) : kSolidBlockMaxDefault;
 }
 
-template <typename T>
-void zeros(DeviceBuffer<T>& buf, std::size_t n, const T& zero) {
-    buf.upload(std::vector<T>(n, zero));
-}
-
 }  // namespace
 
 void CudaSolid::init(const solver::SolidSetup& s, const physics::StepConstants& step) {
-    const physics::Double3 zero3{0, 0, 0};
-    n_ = s.nsolid;
-    nclamp_ = s.nclamp;
-    first_ = s.first_solid;
     step_ = step;
     block_max_ = blockPathMax();
-    count_.upload(s.count);
-    partner_.upload(s.partner);
-    rest_.upload(s.rest);
-    flags_.upload(s.flags);
-    zeros(broken_, s.flags.size(), std::uint8_t(0));
-    body_.upload(s.body);
-    materials_.upload(s.materials);
-    pos_.upload(s.pos);
-    pos_half_.upload(s.pos);
-    vel_.upload(s.vel);
-    vel0_.upload(s.vel);
-    zeros(fluid_force_, n_, zero3);
-    zeros(sum_, n_, 0.0);
-    zeros(impulse_, n_, zero3);
-    zeros(work_, n_, 0.0);
-    zeros(slot_, n_, std::uint32_t(0));
-    clamp_count_.upload(s.clamp_count);
-    clamp_partner_.upload(s.clamp_partner);
-    clamp_slot_.upload(s.clamp_slot);
-    clamp_pos_initial_.upload(s.clamp_pos);
-    clamp_start_.upload(s.clamp_pos);
-    clamp_end_.upload(s.clamp_pos);
-    clamp_object_.upload(s.clamp_object);
-    zeros(clamp_sum_, nclamp_, 0.0);
-    load_force_.upload(s.load_force);
-    load_rate_.upload(s.load_rate);
-}
-
-physics::SolidState CudaSolid::state() const {
-    physics::SolidState st;
-    st.pos = pos_.data();
-    st.pos_half = pos_half_.data();
-    st.vel = vel_.data();
-    st.vel0 = vel0_.data();
-    st.sum = sum_.data();
-    st.fluid_force = fluid_force_.data();
-    st.body = body_.data();
-    st.material = materials_.data();
-    st.load_force = load_force_.empty() ? nullptr : load_force_.data();
-    st.load_rate = load_rate_.empty() ? nullptr : load_rate_.data();
-    st.t0 = t0_;
-    st.span = span_;
-    return st;
-}
-
-physics::SolidBonds CudaSolid::bonds() const {
-    physics::SolidBonds b;
-    b.n = n_;
-    b.count = count_.data();
-    b.partner = partner_.data();
-    b.rest = rest_.data();
-    b.flags = flags_.data();
-    b.broken = broken_.data();
-    return b;
-}
-
-physics::ClampNodes CudaSolid::clamps() const {
-    physics::ClampNodes c;
-    c.n = nclamp_;
-    c.count = clamp_count_.data();
-    c.partner = clamp_partner_.data();
-    c.slot = clamp_slot_.data();
-    c.pos_start = clamp_start_.data();
-    c.pos_end = clamp_end_.data();
-    c.sum = clamp_sum_.data();
-    return c;
+    a_.init(s);
 }
 
 void CudaSolid::updateSlots(const std::uint32_t* id, std::uint32_t nbound) {
-    if (n_ == 0 || nbound == 0) return;
-    slotKernel<<<blocksFor(nbound), kThreads>>>(nbound, id, first_, n_, slot_.data());
+    if (a_.n == 0 || nbound == 0) return;
+    slotKernel<<<blocksFor(nbound), kThreads>>>(nbound, id, a_.first, a_.n, a_.slot.data());
     SEASPRING_CUDA_LAUNCH_CHECK();
 }
 
 void CudaSolid::steps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
-    if (n_ == 0 || n <= 0) return;
-    t0_ = t0;
-    span_ = dt * double(n);
+    if (a_.n == 0 || n <= 0) return;
+    a_.t0 = t0;
+    a_.span = dt * double(n);
     ClampMotion cm;
-    cm.pos_initial = clamp_pos_initial_.data();
-    cm.object = clamp_object_.data();
-    cm.pos_start = clamp_start_.data();
-    cm.pos_end = clamp_end_.data();
-    if (nclamp_ > 0 && !motions.empty()) {
+    cm.pos_initial = a_.clamp_pos_initial.data();
+    cm.object = a_.clamp_object.data();
+    cm.pos_start = a_.clamp_start.data();
+    cm.pos_end = a_.clamp_end.data();
+    if (a_.nclamp > 0 && !motions.empty()) {
         // Synchronous, as in applyMotion: the caller's vector is a temporary, and the time step
         // drains the queue at its dt readback anyway, so waiting here costs little.
         motions_.resize(motions.size());
@@ -224,16 +150,16 @@ void CudaSolid::steps(double t0, double dt, int n, const std::vector<physics::Ri
         cm.motions = motions_.data();
     }
     const double gx = step_.gx, gy = step_.gy, gz = step_.gz;
-    if (std::uint64_t(n_) + nclamp_ <= block_max_) {
+    if (std::uint64_t(a_.n) + a_.nclamp <= block_max_) {
         // Only as many warps as the larger pass needs: the barriers then wait for fewer warps.
-        const std::uint32_t widest = std::max(n_, nclamp_);
+        const std::uint32_t widest = std::max(a_.n, a_.nclamp);
         const unsigned threads = unsigned(std::min<std::uint32_t>(kSolidBlockThreads, (widest + 31u) / 32u * 32u));
-        solidStepsBlockKernel<<<1, threads>>>(state(), bonds(), clamps(), cm, n, dt, gx, gy, gz);
+        solidStepsBlockKernel<<<1, threads>>>(a_.state(), a_.bonds(), a_.clamps(), cm, n, dt, gx, gy, gz);
         SEASPRING_CUDA_LAUNCH_CHECK();
         return;
     }
-    if (nclamp_ > 0) {
-        clampMotionKernel<<<blocksFor(nclamp_), kThreads>>>(nclamp_, cm);
+    if (a_.nclamp > 0) {
+        clampMotionKernel<<<blocksFor(a_.nclamp), kThreads>>>(a_.nclamp, cm);
         SEASPRING_CUDA_LAUNCH_CHECK();
     }
     stepsPerPass(dt, n);
@@ -241,15 +167,15 @@ void CudaSolid::steps(double t0, double dt, int n, const std::vector<physics::Ri
 
 /// The per-pass path: the kernel boundaries are the barriers of CpuSolid::steps' `omp for`s.
 void CudaSolid::stepsPerPass(double dt, int n) {
-    const physics::SolidState st = state();
-    const physics::SolidBonds b = bonds();
-    const physics::ClampNodes cn = clamps();
+    const physics::SolidState st = a_.state();
+    const physics::SolidBonds b = a_.bonds();
+    const physics::ClampNodes cn = a_.clamps();
     const double gx = step_.gx, gy = step_.gy, gz = step_.gz;
-    const unsigned sb = blocksFor(n_), cb = blocksFor(nclamp_);
+    const unsigned sb = blocksFor(a_.n), cb = blocksFor(a_.nclamp);
     auto sums = [&](const physics::Double3* ep, double f) {
         solidSumsKernel<<<sb, kThreads>>>(ep, st, b, cn, f);
         SEASPRING_CUDA_LAUNCH_CHECK();
-        if (nclamp_ == 0) return;
+        if (a_.nclamp == 0) return;
         clampSumsKernel<<<cb, kThreads>>>(ep, b, cn, f);
         SEASPRING_CUDA_LAUNCH_CHECK();
     };
@@ -265,41 +191,12 @@ void CudaSolid::stepsPerPass(double dt, int n) {
     }
 }
 
-namespace {
-template <typename T>
-void copyDevice(DeviceBuffer<T>& dst, const DeviceBuffer<T>& src) {
-    dst.resize(src.size());
-    if (!src.empty())
-        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst.data(), src.data(), src.size() * sizeof(T), cudaMemcpyDeviceToDevice));
-}
-}  // namespace
-
-void CudaSolid::save() {
-    copyDevice(pos_saved_, pos_);
-    copyDevice(vel_saved_, vel_);
-    copyDevice(broken_saved_, broken_);
-}
-
-void CudaSolid::restore() {
-    copyDevice(pos_, pos_saved_);
-    copyDevice(vel_, vel_saved_);
-    copyDevice(broken_, broken_saved_);
-}
-
 void CudaSolid::toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho) {
-    if (n_ == 0) return;
-    toBoundaryKernel<<<blocksFor(n_), kThreads>>>(n_, slot_.data(), pos_.data(), vel_.data(), fluid_force_.data(),
-                                                   dt, impulse_.data(), work_.data(), ledger, bpos, bvelrho);
+    if (a_.n == 0) return;
+    toBoundaryKernel<<<blocksFor(a_.n), kThreads>>>(a_.n, a_.slot.data(), a_.pos.data(), a_.vel.data(),
+                                                   a_.fluid_force.data(), dt, a_.impulse.data(), a_.work.data(),
+                                                   ledger, bpos, bvelrho);
     SEASPRING_CUDA_LAUNCH_CHECK();
-}
-
-void CudaSolid::download(solver::HostState& out) const {
-    // cudaMemcpy on the default stream waits for the queued sub-cycle kernels.
-    vel_.download(out.solid_vel);
-    fluid_force_.download(out.solid_force);
-    broken_.download(out.bond_broken);
-    impulse_.download(out.solid_impulse);
-    work_.download(out.solid_work);
 }
 
 }  // namespace seaspring::cuda

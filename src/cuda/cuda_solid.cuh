@@ -26,6 +26,7 @@
 #include "physics/time_integration.h"
 #include "physics/vcpm.h"
 #include "solver/backend.h"
+#include "solver/solid_arrays.h"
 
 namespace seaspring::cuda {
 
@@ -43,55 +44,33 @@ constexpr std::uint32_t kSolidBlockMaxDefault = 2048;
 class CudaSolid {
 public:
     void init(const solver::SolidSetup& s, const physics::StepConstants& step);
-    bool empty() const { return n_ == 0; }
-    std::uint32_t size() const { return n_; }
+    bool empty() const { return a_.n == 0; }
+    std::uint32_t size() const { return a_.n; }
 
     /// slot[s] = sorted index of solid particle s, from the sorted ids (device) of the boundary
     /// block [0, nbound).
     void updateSlots(const std::uint32_t* id, std::uint32_t nbound);
-    const std::uint32_t* slots() const { return slot_.data(); }
-    physics::Double3* fluidForce() { return fluid_force_.data(); }
+    const std::uint32_t* slots() const { return a_.slot.data(); }
+    physics::Double3* fluidForce() { return a_.fluid_force.data(); }
 
-    /// n sub-steps of dt (clamp nodes moved by `motions` over the whole interval).
+    /// n sub-steps of dt from time t0 (clamp nodes moved by `motions` over the whole interval).
     void steps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions);
     /// Positions and velocities into the boundary block (sorted device arrays) after a
-    /// sub-cycle of length dt; accumulates the coupling ledger (impulse and work of the
-    /// hydrodynamic force), as CpuSolid::toBoundary.
+    /// sub-cycle of length dt; `ledger`: accumulate the impulse and work of the hydrodynamic
+    /// force, as CpuSolid::toBoundary.
     void toBoundary(double dt, bool ledger, physics::Double3* bpos, physics::Float4* bvelrho);
     /// Device-to-device snapshot of positions, velocities and bond states, and back.
-    void save();
-    void restore();
+    void save() { a_.save(); }
+    void restore() { a_.restore(); }
     /// solid_vel, solid_force, bond_broken, solid_impulse, solid_work (the CPU's layouts).
-    void download(solver::HostState& out) const;
+    void download(solver::HostState& out) const { a_.download(out); }
 
 private:
-    physics::SolidState state() const;
-    physics::SolidBonds bonds() const;
-    physics::ClampNodes clamps() const;
     void stepsPerPass(double dt, int n);
 
-    std::uint32_t n_ = 0, nclamp_ = 0, first_ = 0;
     std::uint32_t block_max_ = kSolidBlockMaxDefault;
     physics::StepConstants step_;
-    DeviceBuffer<std::uint8_t> count_, flags_, broken_;
-    DeviceBuffer<std::uint32_t> partner_;
-    DeviceBuffer<double> rest_;
-    DeviceBuffer<std::uint16_t> body_;
-    DeviceBuffer<physics::VcpmMaterial> materials_;
-    DeviceBuffer<physics::Double3> pos_, pos_half_, vel_, vel0_, fluid_force_;
-    DeviceBuffer<double> sum_;
-    DeviceBuffer<physics::Double3> impulse_;  ///< ledger: sum of F dt per particle [N s]
-    DeviceBuffer<double> work_;               ///< ledger: sum of F . dx per particle [J]
-    DeviceBuffer<physics::Double3> pos_saved_, vel_saved_;
-    DeviceBuffer<physics::Double3> load_force_, load_rate_;  ///< empty without point loads
-    double t0_ = 0, span_ = 0;
-    DeviceBuffer<std::uint8_t> broken_saved_;
-    DeviceBuffer<std::uint32_t> slot_;
-    DeviceBuffer<std::uint8_t> clamp_count_;
-    DeviceBuffer<std::uint32_t> clamp_partner_, clamp_slot_;
-    DeviceBuffer<physics::Double3> clamp_pos_initial_, clamp_start_, clamp_end_;
-    DeviceBuffer<std::int16_t> clamp_object_;
-    DeviceBuffer<double> clamp_sum_;
+    solver::SolidArrays<DeviceBuffer> a_;
     DeviceBuffer<physics::RigidMotionGpu> motions_;  ///< the poses of the current steps() call
 };
 

@@ -56,4 +56,21 @@ private:
     std::size_t n_ = 0;
 };
 
+/// The container interface of solver::SolidArrays (found by argument-dependent lookup).
+template <typename T>
+void assignFrom(DeviceBuffer<T>& dst, const std::vector<T>& src) {
+    dst.upload(src);
+}
+/// Device-to-device copy, queued on the default stream.
+template <typename T>
+void copyBuffer(DeviceBuffer<T>& dst, const DeviceBuffer<T>& src) {
+    dst.resize(src.size());
+    if (!src.empty())
+        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst.data(), src.data(), src.size() * sizeof(T), cudaMemcpyDeviceToDevice));
+}
+template <typename T>
+void copyToHost(const DeviceBuffer<T>& src, std::vector<T>& dst) {
+    src.download(dst);
+}
+
 }  // namespace seaspring::cuda

@@ -1,0 +1,153 @@
+// SeaSpring — MIT licence.
+/// \file solid_arrays.h
+/// \brief The arrays of the VCPM solid drivers, written once for both backends: `Buf` is the
+///        container (host: std::vector; CUDA: cuda::DeviceBuffer). Set-up from a SolidSetup,
+///        the physics views (SolidState, SolidBonds, ClampNodes), the snapshot of the staggered
+///        midpoint coupling and the host copy all live here; the drivers only loop or launch.
+///
+/// A container type provides data(), empty(), and the free functions (found by argument-
+/// dependent lookup) `assignFrom(Buf<T>&, const std::vector<T>&)` (set-up),
+/// `copyBuffer(Buf<T>&, const Buf<T>&)` (snapshot) and `copyToHost(const Buf<T>&,
+/// std::vector<T>&)`; std::vector's are below, DeviceBuffer's in cuda/device_buffer.cuh.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "physics/vcpm.h"
+#include "solver/backend.h"
+
+namespace seaspring::solver {
+
+template <typename T>
+void assignFrom(std::vector<T>& dst, const std::vector<T>& src) {
+    dst = src;
+}
+template <typename T>
+void copyBuffer(std::vector<T>& dst, const std::vector<T>& src) {
+    dst = src;
+}
+template <typename T>
+void copyToHost(const std::vector<T>& src, std::vector<T>& dst) {
+    dst = src;
+}
+
+template <typename T>
+using HostBuffer = std::vector<T>;
+
+template <template <typename> class Buf>
+struct SolidArrays {
+    std::uint32_t n = 0, nclamp = 0, first = 0;
+    Buf<std::uint8_t> count, flags, broken, broken_saved;
+    Buf<std::uint32_t> partner, slot;
+    Buf<double> rest, sum, work;
+    Buf<std::uint16_t> body;
+    Buf<physics::VcpmMaterial> materials;
+    Buf<physics::Double3> pos, pos_half, vel, vel0, fluid_force;
+    Buf<physics::Double3> impulse;  ///< ledger: sum of F dt per particle [N s]
+    Buf<physics::Double3> pos_saved, vel_saved;
+    Buf<physics::Double3> load_force, load_rate;  ///< empty without point loads
+    Buf<std::uint8_t> clamp_count;
+    Buf<std::uint32_t> clamp_partner, clamp_slot;
+    Buf<physics::Double3> clamp_pos_initial, clamp_start, clamp_end;
+    Buf<std::int16_t> clamp_object;
+    Buf<double> clamp_sum;
+    double t0 = 0, span = 0;  ///< the current sub-cycle's start time and length
+
+    void init(const SolidSetup& s) {
+        const physics::Double3 zero3{0, 0, 0};
+        n = s.nsolid;
+        nclamp = s.nclamp;
+        first = s.first_solid;
+        assignFrom(count, s.count);
+        assignFrom(partner, s.partner);
+        assignFrom(rest, s.rest);
+        assignFrom(flags, s.flags);
+        assignFrom(broken, std::vector<std::uint8_t>(s.flags.size(), 0));
+        assignFrom(body, s.body);
+        assignFrom(materials, s.materials);
+        assignFrom(pos, s.pos);
+        assignFrom(pos_half, s.pos);
+        assignFrom(vel, s.vel);
+        assignFrom(vel0, s.vel);
+        assignFrom(fluid_force, std::vector<physics::Double3>(n, zero3));
+        assignFrom(sum, std::vector<double>(n, 0.0));
+        assignFrom(impulse, std::vector<physics::Double3>(n, zero3));
+        assignFrom(work, std::vector<double>(n, 0.0));
+        assignFrom(slot, std::vector<std::uint32_t>(n, 0));
+        assignFrom(clamp_count, s.clamp_count);
+        assignFrom(clamp_partner, s.clamp_partner);
+        assignFrom(clamp_slot, s.clamp_slot);
+        assignFrom(clamp_pos_initial, s.clamp_pos);
+        assignFrom(clamp_start, s.clamp_pos);
+        assignFrom(clamp_end, s.clamp_pos);
+        assignFrom(clamp_object, s.clamp_object);
+        assignFrom(clamp_sum, std::vector<double>(nclamp, 0.0));
+        assignFrom(load_force, s.load_force);
+        assignFrom(load_rate, s.load_rate);
+    }
+
+    physics::SolidState state() {
+        physics::SolidState st;
+        st.pos = pos.data();
+        st.pos_half = pos_half.data();
+        st.vel = vel.data();
+        st.vel0 = vel0.data();
+        st.sum = sum.data();
+        st.fluid_force = fluid_force.data();
+        st.body = body.data();
+        st.material = materials.data();
+        st.load_force = load_force.empty() ? nullptr : load_force.data();
+        st.load_rate = load_rate.empty() ? nullptr : load_rate.data();
+        st.t0 = t0;
+        st.span = span;
+        return st;
+    }
+
+    physics::SolidBonds bonds() {
+        physics::SolidBonds b;
+        b.n = n;
+        b.count = count.data();
+        b.partner = partner.data();
+        b.rest = rest.data();
+        b.flags = flags.data();
+        b.broken = broken.data();
+        return b;
+    }
+
+    physics::ClampNodes clamps() {
+        physics::ClampNodes c;
+        c.n = nclamp;
+        c.count = clamp_count.data();
+        c.partner = clamp_partner.data();
+        c.slot = clamp_slot.data();
+        c.pos_start = clamp_start.data();
+        c.pos_end = clamp_end.data();
+        c.sum = clamp_sum.data();
+        return c;
+    }
+
+    /// Snapshot of the midpoint coupling: positions, velocities and bond states ...
+    void save() {
+        copyBuffer(pos_saved, pos);
+        copyBuffer(vel_saved, vel);
+        copyBuffer(broken_saved, broken);
+    }
+    /// ... and back to it.
+    void restore() {
+        copyBuffer(pos, pos_saved);
+        copyBuffer(vel, vel_saved);
+        copyBuffer(broken, broken_saved);
+    }
+
+    /// The solid part of HostState (solid-index order, slot-major bond states).
+    void download(HostState& out) const {
+        copyToHost(vel, out.solid_vel);
+        copyToHost(fluid_force, out.solid_force);
+        copyToHost(broken, out.bond_broken);
+        copyToHost(impulse, out.solid_impulse);
+        copyToHost(work, out.solid_work);
+    }
+};
+
+}  // namespace seaspring::solver
