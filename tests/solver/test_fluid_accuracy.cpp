@@ -5,8 +5,6 @@
 ///        experiment, and particles that leave the domain are excluded and counted.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -19,9 +17,7 @@ using namespace seaspring;
 
 namespace {
 
-std::string scratch(const std::string& tag) {
-    return ::testing::TempDir() + "seaspring_accuracy_" + tag + "_" + std::to_string(::getpid());
-}
+std::string scratch(const std::string& tag) { return test::scratch("accuracy_" + tag); }
 
 std::string constantsDef() {
     return R"(<constantsdef><gravity x="0" y="0" z="-9.81" /><rhop0 value="1000" /><hswl value="0" auto="true" />

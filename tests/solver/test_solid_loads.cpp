@@ -6,8 +6,6 @@
 ///        load; and a bad <pointload> attribute is an input error with its line.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
 #include <string>
 
@@ -19,9 +17,7 @@ using namespace seaspring;
 
 namespace {
 
-std::string scratch(const std::string& tag) {
-    return ::testing::TempDir() + "seaspring_loads_" + tag + "_" + std::to_string(::getpid());
-}
+std::string scratch(const std::string& tag) { return test::scratch("loads_" + tag); }
 
 /// A free 2D block of 8 x 4 particles (dp 0.01; steel-like, no gravity, no clamp), one or two
 /// point loads given as XML, run without fluid.

@@ -5,8 +5,6 @@
 ///        physics changes (so the comparison can fail).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <string>
 
 #include "solver_test_util.h"
@@ -15,9 +13,7 @@ using namespace seaspring;
 
 namespace {
 
-std::string scratch(const std::string& tag) {
-    return ::testing::TempDir() + "seaspring_parity_" + tag + "_" + std::to_string(::getpid());
-}
+std::string scratch(const std::string& tag) { return test::scratch("parity_" + tag); }
 
 /// A 2D tank (0.6 x 0.4 m) with a water column 0.2 x 0.2 m and a piston (mkbound 1) moving
 /// right at 0.2 m/s, dp = 0.01.
