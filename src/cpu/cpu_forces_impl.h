@@ -73,7 +73,7 @@ physics::DtMaxima cpuForcesFor(CpuArrays& a, std::uint32_t nbound, std::uint32_t
         DtMaxima local;
 #pragma omp for schedule(static) nowait
         for (std::int64_t i = 0; i < np; ++i)
-            local = combineDtMaxima(local, dtMaximaAt(std::uint32_t(i), nbound, v));
+            local = combineDtMaxima(local, dtMaximaAt(std::uint32_t(i), nbound, v, c.dt_all_particles != 0));
 #pragma omp critical
         total = combineDtMaxima(total, local);
     }

@@ -112,11 +112,11 @@ __global__ void spsTauKernel(std::uint32_t nbound, std::uint32_t np, physics::Pa
 }
 
 __global__ void dtMaximaBlocksKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v,
-                                     physics::DtMaxima* out) {
+                                     bool all_particles, physics::DtMaxima* out) {
     __shared__ physics::DtMaxima sh[kReduceThreads];
     physics::DtMaxima m;
     for (std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x; i < np; i += gridDim.x * blockDim.x)
-        m = physics::combineDtMaxima(m, physics::dtMaximaAt(i, nbound, v));
+        m = physics::combineDtMaxima(m, physics::dtMaximaAt(i, nbound, v, all_particles));
     sh[threadIdx.x] = m;
     __syncthreads();
     for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
@@ -145,7 +145,8 @@ physics::DtMaxima finishForces(bool sps, DeviceArrays& a, std::uint32_t nbound, 
         spsTauKernel<<<blocksFor(np - nbound), kThreads>>>(nbound, np, a.v, c.sps_smag, c.sps_blin);
         SEASPRING_CUDA_LAUNCH_CHECK();
     }
-    dtMaximaBlocksKernel<<<a.reduce_blocks, kReduceThreads>>>(nbound, np, a.v, a.block_maxima);
+    dtMaximaBlocksKernel<<<a.reduce_blocks, kReduceThreads>>>(nbound, np, a.v, c.dt_all_particles != 0,
+                                                              a.block_maxima);
     SEASPRING_CUDA_LAUNCH_CHECK();
     dtMaximaFinalKernel<<<1, kReduceThreads>>>(a.reduce_blocks, a.block_maxima, a.maxima);
     SEASPRING_CUDA_LAUNCH_CHECK();

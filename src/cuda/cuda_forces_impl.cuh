@@ -43,7 +43,7 @@ boundForcesKernel(std::uint32_t nbound, physics::InteractionInputs in, physics::
 
 __global__ void spsTauKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v, float smag,
                              float blin);
-__global__ void dtMaximaBlocksKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v,
+__global__ void dtMaximaBlocksKernel(std::uint32_t nbound, std::uint32_t np, physics::ParticleView v, bool all_particles,
                                      physics::DtMaxima* out);
 __global__ void dtMaximaFinalKernel(std::uint32_t nblocks, const physics::DtMaxima* in, physics::DtMaxima* out);
 

@@ -25,6 +25,7 @@ struct FluidConstants {
     float ddtgz = 0;        ///< rhop0 g_z / B
     float sps_smag = 0;     ///< SPS constants (makeSpsConstants)
     float sps_blin = 0;
+    int dt_all_particles = 0;  ///< DtAllParticles: boundary velocities enter the dt criterion
 };
 
 /// The options that specialise the fluid interaction at compile time.

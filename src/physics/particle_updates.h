@@ -98,16 +98,18 @@ SEASPRING_HD inline void motionAt(std::uint32_t i, const ParticleView& v, std::u
     v.velrho[i].z = float((q.z - p.z) * m.inv_dt);
 }
 
-/// Time-step maxima contributed by particle i (fluid: |a|^2, |v|^2 and visc; boundary: visc).
-SEASPRING_HD inline DtMaxima dtMaximaAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v) {
+/// Time-step maxima contributed by particle i (fluid: |a|^2, |v|^2 and visc; boundary: visc,
+/// and |v|^2 too with DtAllParticles = 1, so that fast moving walls and solids limit dt).
+SEASPRING_HD inline DtMaxima dtMaximaAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
+                                        bool all_particles) {
     DtMaxima m;
     m.visc = v.visc[i];
+    const Float4 u = v.velrho[i];
     if (i >= nbound) {
         const Float4 a = v.acear[i];
-        const Float4 u = v.velrho[i];
         m.ace2 = a.x * a.x + a.y * a.y + a.z * a.z;
-        m.vel2 = u.x * u.x + u.y * u.y + u.z * u.z;
     }
+    if (i >= nbound || all_particles) m.vel2 = u.x * u.x + u.y * u.y + u.z * u.z;
     return m;
 }
 

@@ -92,6 +92,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
     s.sps = makeSpsConstants(dp, c.constants.dimensions);
     f.sps_smag = s.sps.smag;
     f.sps_blin = s.sps.blin;
+    f.dt_all_particles = p.dt_all_particles ? 1 : 0;
 
     if (!makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
                       c.domain_max.z, h, cell_div, s.grid))

@@ -153,7 +153,7 @@ SolverParameters readParameters(const ParameterTable& t) {
     p.dt_min = t.atLeast("DtMin", 0, true);
     p.dt_fixed = t.atLeast("DtFixed", 0, true);
     t.requireNone("DtFixedFile", "a dt file");
-    p.dt_all_particles = t.choice("DtAllParticles", {0}, "0, dt from the fluid particles") != 0;
+    p.dt_all_particles = t.choice("DtAllParticles", {0, 1}, "0 fluid, 1 all particles") != 0;
     p.time_max = t.atLeast("TimeMax", 0, false);
     p.vcpm_dt_coef = t.atLeast("VcpmDtCoef", 0, false);
     p.vcpm_coupling = t.choice("VcpmCoupling", {1, 2}, "1 staggered as seed 000, 2 staggered midpoint");

@@ -429,7 +429,7 @@ TEST(SolverCaseErrors, UnsupportedParameterValuesNameTheLine) {
     expectParameterError("RigidAlgorithm", "1", "2", {"not supported by seaspring (supported: 1"});
     expectParameterError("FtPause", "0", "0.5", {"a floating-body pause is not supported"});
     expectParameterError("FtIgnoreRadius", "0", "1", {"not supported by seaspring"});
-    expectParameterError("DtAllParticles", "0", "1", {"not supported by seaspring (supported: 0"});
+    expectParameterError("DtAllParticles", "0", "2", {"not supported by seaspring (supported: 0 fluid, 1 all particles"});
     expectParameterError("TimeOutExtra", "-1", "0.1", {"extra motion output is not supported"});
     expectParameterError("DivCleanKp", "0", "1", {"divergence cleaning is not supported"});
 }
