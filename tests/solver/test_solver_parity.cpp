@@ -108,3 +108,23 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes3D) {
         maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
     EXPECT_LT(maxdiff, 1e-5);
 }
+
+// DtAllParticles = 1: a piston moving at 5 m/s (10 |v| = 50 m/s above c0 = 28 m/s) limits the
+// time step to CFL h / (10 |v|); with 0 only the fluid's velocities count.
+TEST(SolverParity, DtAllParticlesLetsMovingWallsLimitTheTimeStep) {
+    std::string def = tank2d(R"(<parameter key="StepAlgorithm" value="2" /><parameter key="Visco" value="0.05" />)");
+    const std::string slow = R"(<vel x="0.2" y="0" z="0" />)";
+    def.replace(def.find(slow), slow.size(), R"(<vel x="5" y="0" z="0" />)");
+    std::string all = def;
+    const std::string params = "<execution><parameters>";
+    all.replace(all.find(params), params.size(), params + R"(<parameter key="DtAllParticles" value="1" />)");
+    const std::string dir = scratch("dtall");
+    auto steps = [](solver::RunOptions& o) { o.nsteps = 5; };
+    const auto r0 = test::runCpu(test::generateCase(dir, "fluid", def), dir + "/out0", 2, steps);
+    const auto r1 = test::runCpu(test::generateCase(dir, "all", all), dir + "/out1", 2, steps);
+    const double h = r1.kase.constants.h, cfl = r1.kase.params.cfl_number;
+    std::printf("dt fluid-only %.4e s, all particles %.4e s, CFL h/(10*5 m/s) = %.4e s\n", r0.summary.dt_last,
+                r1.summary.dt_last, cfl * h / 50.0);
+    EXPECT_GT(r0.summary.dt_last, 1.3 * r1.summary.dt_last);
+    EXPECT_NEAR(r1.summary.dt_last, cfl * h / 50.0, 0.05 * cfl * h / 50.0);
+}
