@@ -20,3 +20,6 @@ cp "$root/../shared/dualsphysics-cases/Spheric2Dam_01M.xml" \
    "$root/../shared/dualsphysics-cases/CaseDambreakVal2D_Def.xml" \
    "$root/../shared/validation-data/antoci2007-elastic-gate/exp_tip_dx_antoci2007_digitized_A.csv" \
    "$root/../shared/validation-data/antoci2007-elastic-gate/exp_tip_dy_antoci2007_digitized_A.csv" "$build/shared-cases/"
+mkdir -p "$build/shared-cases/flexstruc"
+cp "$root/../shared/dualsphysics-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" \
+   "$root/../shared/dualsphysics-cases/flexstruc/DambreakGateTimeSeries.csv" "$build/shared-cases/flexstruc/"

@@ -42,6 +42,10 @@ parity plate2d_midpoint "$work/plate" 400
 parity plate2d_seedscheme "$work/plate" 400 -vcpmcoupling:1
 parity bar_breaking "$work/bar" 4000
 parity dbplate3d_breaking "$work/dbplate" 1800
+# DualSPHysics' own flexstruc example (Liao 2015 gate + plate; Verlet, laminar+SPS, Molteni DDT,
+# DtAllParticles 1, a gate moved by a data file): the seed's coupling scheme under Verlet.
+"$bin/gencase" "$root/build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" "$work/liao2d" >/dev/null
+parity liao2d_dualsphysics_case "$work/liao2d" 600
 # The per-pass GPU path on a small solid (the block path is the default there): same bits.
 SEASPRING_SOLID_BLOCK_MAX=0 "$bin/seaspring" -gpu -nsteps:400 -sv:none -progress:0 "$work/plate" "$work/o_pp" >"$work/plate_perpass.log" 2>&1
 echo "plate2d_midpoint gpu per-pass path: $(grep -o 'State hash: [0-9a-f]*' "$work/plate_perpass.log")" | tee -a "$table"
