@@ -362,45 +362,45 @@ RunSummary Simulation::run() {
             step += n;
             placeMoving(t, dt);
         } else {
-        if (symplectic) {
-            dt = p.dt_fixed > 0 ? p.dt_fixed : dt_next;
-            const double dtp = limitDt(physics::variableDt(forces(), h, cs0, cfl));
-            if (midpoint) {
-                // Staggered midpoint: the solid goes to n+1/2 with the force of the fluid at n, so
-                // that the corrector's evaluation sees fluid and solid at n+1/2; then the solid
-                // restarts from n with that evaluation's force (below).
-                phase(t_solid, [&] {
-                    backend_->solidHydroForces();
-                    backend_->solidSave();
-                    advanceSolid(t, 0.5 * dt, false);
-                    return 0;
-                });
+            if (symplectic) {
+                dt = p.dt_fixed > 0 ? p.dt_fixed : dt_next;
+                const double dtp = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+                if (midpoint) {
+                    // Staggered midpoint: the solid goes to n+1/2 with the force of the fluid at n, so
+                    // that the corrector's evaluation sees fluid and solid at n+1/2; then the solid
+                    // restarts from n with that evaluation's force (below).
+                    phase(t_solid, [&] {
+                        backend_->solidHydroForces();
+                        backend_->solidSave();
+                        advanceSolid(t, 0.5 * dt, false);
+                        return 0;
+                    });
+                }
+                predictor(dt);
+                divide();
+                const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+                if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
+                if (midpoint) phase(t_solid, [&] { backend_->solidRestore(); return 0; });
+                corrector(dt);
+                dt_next = std::min(dtp, dtc);
+            } else {
+                const double dtv = limitDt(physics::variableDt(forces(), h, cs0, cfl));
+                dt = p.dt_fixed > 0 ? p.dt_fixed : dtv;
+                const bool euler = ++verlet_count >= p.verlet_steps;
+                if (euler) verlet_count = 0;
+                if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
+                verlet(dt, euler);
+                dt_prev = dt;
             }
-            predictor(dt);
+            if (solids) phase(t_solid, [&] { advanceSolid(t, dt); return 0; });
+            t += dt;
+            ++step;
+            // Moving boundaries: pose at t, velocity over the coming step (its dt when known).
+            phase(t_other, [&] {
+                placeMoving(t, symplectic ? (p.dt_fixed > 0 ? p.dt_fixed : dt_next) : dt_prev);
+                return 0;
+            });
             divide();
-            const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
-            if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
-            if (midpoint) phase(t_solid, [&] { backend_->solidRestore(); return 0; });
-            corrector(dt);
-            dt_next = std::min(dtp, dtc);
-        } else {
-            const double dtv = limitDt(physics::variableDt(forces(), h, cs0, cfl));
-            dt = p.dt_fixed > 0 ? p.dt_fixed : dtv;
-            const bool euler = ++verlet_count >= p.verlet_steps;
-            if (euler) verlet_count = 0;
-            if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
-            verlet(dt, euler);
-            dt_prev = dt;
-        }
-        if (solids) phase(t_solid, [&] { advanceSolid(t, dt); return 0; });
-        t += dt;
-        ++step;
-        // Moving boundaries: pose at t, velocity over the coming step (its dt when known).
-        phase(t_other, [&] {
-            placeMoving(t, symplectic ? (p.dt_fixed > 0 ? p.dt_fixed : dt_next) : dt_prev);
-            return 0;
-        });
-        divide();
         }
         sum_.dt_last = dt;
         const std::uint32_t active = backend_->activeFluid();
