@@ -33,12 +33,15 @@ namespace seaspring::cuda {
 /// Threads of the single-block sub-cycle kernel (block-stride loops over the particles).
 constexpr int kSolidBlockThreads = 1024;
 
-/// Default largest nsolid + nclamp run by the single-block kernel. Why this value: one SM
-/// computes a pass over up to 1024 particles (one per thread) in about the latency of one
-/// particle's bond loop, which is about the cost of one launch; beyond about two particles per
-/// thread the double-precision work of the block (about 2,400 DP operations per particle and
-/// sub-step, estimated) exceeds the launch gaps that the per-pass kernels spend, and those
-/// spread the work over all SMs. Not measured yet: tune it with SEASPRING_SOLID_BLOCK_MAX.
+/// Default largest nsolid + nclamp run by the single-block kernel. Measured on an H200
+/// (tools/device_solid_paths.sh, same hashes on both paths): the Antoci gate (395 solid
+/// particles, about 3 sub-steps per fluid step) runs 3,000 coupled steps in 2.68 s with the
+/// block kernel against 3.14 s per pass; a 1,250-particle cantilever, 20,000 sub-steps in one
+/// call, 1.45 s against 1.39 s (even); at 10,000 particles 9.0 s against 1.50 s and at 48,000
+/// 4.7 s against 0.14 s for 2,000 sub-steps (one SM cannot keep up). The crossover lies
+/// between about 1,300 and 2,000 particles; 2,048 keeps every case within a few percent of the
+/// faster path. Small solids stay latency-bound either way (about 70 us per sub-step: each
+/// thread walks its 18 bonds one dependent load after another).
 constexpr std::uint32_t kSolidBlockMaxDefault = 2048;
 
 class CudaSolid {
