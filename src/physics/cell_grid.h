@@ -36,14 +36,16 @@ struct CellGrid {
     }
 };
 
-/// Cell coordinates of a position, clamped to the grid.
+/// Cell coordinates of a position, clamped to the grid. A NaN coordinate (an unstable VCPM
+/// solid: boundary particles are never excluded) gives cell 0 rather than an undefined int
+/// conversion; finite coordinates take the same branches as a plain clamp.
 SEASPRING_HD inline void cellOf(const CellGrid& g, const Double3& p, int& cx, int& cy, int& cz) {
     const double fx = floor((p.x - g.minx) / g.cellsize);
     const double fy = floor((p.y - g.miny) / g.cellsize);
     const double fz = floor((p.z - g.minz) / g.cellsize);
-    cx = fx < 0.0 ? 0 : (fx >= double(g.ncx) ? g.ncx - 1 : int(fx));
-    cy = fy < 0.0 ? 0 : (fy >= double(g.ncy) ? g.ncy - 1 : int(fy));
-    cz = fz < 0.0 ? 0 : (fz >= double(g.ncz) ? g.ncz - 1 : int(fz));
+    cx = !(fx >= 0.0) ? 0 : (fx >= double(g.ncx) ? g.ncx - 1 : int(fx));
+    cy = !(fy >= 0.0) ? 0 : (fy >= double(g.ncy) ? g.ncy - 1 : int(fy));
+    cz = !(fz >= 0.0) ? 0 : (fz >= double(g.ncz) ? g.ncz - 1 : int(fz));
 }
 
 /// The PosCell of a position: offsets from its cell's origin and the packed cell.

@@ -248,6 +248,7 @@ void Simulation::output(double time, long long step) {
     std::vector<float> disp, strain;
     std::vector<std::uint8_t> broken;
     if (!setup_.solid.empty()) {
+        checkSolidFinite(st, time);
         solidFields(st, disp, strain, broken);
         const Vec3d g = case_.constants.gravity;
         ledger_->file.add(ledgerRow(time, st, setup_.solid, case_.particles.pos, setup_.nbound,

@@ -68,6 +68,8 @@ private:
     void advanceSolid(double time, double dt_fluid, bool ledger = true);
     /// Solid-only cases: `n` solid sub-steps from `time`.
     void solidOnlySteps(double time, long long n, double dt);
+    /// Stops the run (seaspring::Error) when a solid position is not finite.
+    void checkSolidFinite(const HostState& st, double time) const;
     /// Broken bonds (each solid-solid bond counted once) in `st`.
     std::uint64_t brokenBonds(const HostState& st) const;
     double limitDt(double dt);

@@ -3,11 +3,28 @@
 /// \brief The VCPM parts of the time loop (see simulation.h): the solid sub-cycle of a fluid
 ///        step, solid-only steps, broken-bond counts and the solid fields of the outputs.
 #include <algorithm>
+#include <cstdio>
+
+#include "core/error.h"
 
 #include "physics/vcpm.h"
 #include "solver/simulation.h"
 
 namespace seaspring::solver {
+
+void Simulation::checkSolidFinite(const HostState& st, double time) const {
+    const SolidSetup& so = setup_.solid;
+    for (std::uint32_t r = 0; r < so.nsolid; ++r) {
+        const physics::Double3 p = st.pos[so.first_solid + r];
+        if (p.x - p.x == 0.0 && p.y - p.y == 0.0 && p.z - p.z == 0.0) continue;
+        char t[32];
+        std::snprintf(t, sizeof t, "%.6g", time);
+        throw Error("the VCPM solid became unstable: particle " + std::to_string(so.first_solid + r) +
+                    " (mk " + std::to_string(case_.particles.mk[so.first_solid + r]) + ") has a non-finite position at t = " +
+                    t + " s; lower VcpmDtCoef (now " + std::to_string(case_.params.vcpm_dt_coef) +
+                    ", stable up to about 0.8 for Poisson's ratio >= 0) or check the material");
+    }
+}
 
 std::uint64_t Simulation::brokenBonds(const HostState& st) const {
     const SolidSetup& so = setup_.solid;

@@ -117,3 +117,22 @@ TEST(SolidLoads, TensileStrengthGivesTheSeedCriticalStretch) {
         EXPECT_NE(std::string(e.what()).find("not both"), std::string::npos) << e.what();
     }
 }
+
+// A sub-step far beyond the lattice's stability limit (VcpmDtCoef 2 at nu = 0, limit 0.82)
+// blows the solid up: the run stops with an error that says so, without crashing.
+TEST(SolidLoads, UnstableSolidStopsWithAClearError) {
+    const std::string dir = scratch("unstable");
+    std::string def = freeBlock(R"(<pointload x="0.07" y="0" z="0.03" fx="3" />)");
+    const std::string solid = R"(poissratio="0.3")";
+    def.replace(def.find(solid), solid.size(), R"(poissratio="0")");
+    const std::string params = "<parameters>";
+    def.replace(def.find(params), params.size(), params + R"(<parameter key="VcpmDtCoef" value="2" />)");
+    const std::string kase = test::generateCase(dir, "Unstable", def);
+    try {
+        test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) { o.tmax = 0.03; });
+        FAIL() << "an unstable solid ran to the end";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("VCPM solid became unstable"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("VcpmDtCoef"), std::string::npos) << e.what();
+    }
+}
