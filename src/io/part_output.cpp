@@ -45,6 +45,7 @@ void writeContents(const std::string& path, const PartFrame& f) {
         h5::writeDataset<float>(file, "disp", f.disp, f.np, 3, contiguous);
         h5::writeDataset<float>(file, "strain", f.strain, f.np, 1, contiguous);
         h5::writeDataset<std::uint8_t>(file, "broken", f.broken, f.np, 1, contiguous);
+        h5::writeDataset<float>(file, "damage", f.damage, f.np, 1, contiguous);
     }
     h5::writeDoubleAttribute(file, "time", f.time);
     h5::writeInt64Attribute(file, "step", f.step);
@@ -131,9 +132,11 @@ PartData readPartH5(const std::string& path) {
         d.disp.resize(3 * np);
         d.strain.resize(np);
         d.broken.resize(np);
+        d.damage.resize(np);
         h5::readDatasetInto<float>(file, "disp", d.disp.data(), np, 3);
         h5::readDatasetInto<float>(file, "strain", d.strain.data(), np, 1);
         h5::readDatasetInto<std::uint8_t>(file, "broken", d.broken.data(), np, 1);
+        h5::readDatasetInto<float>(file, "damage", d.damage.data(), np, 1);
     }
     return d;
 }

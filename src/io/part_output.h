@@ -14,6 +14,7 @@
 ///   /disp  float32 [np x 3] displacement from the initial position [m]
 ///   /strain float32 [np] mean relative elongation (|r|-L0)/L0 of the intact bonds
 ///   /broken uint8 [np] number of broken bonds
+///   /damage float32 [np] broken bonds / initial bonds of the particle (0 intact .. 1 detached)
 ///   root attributes: time (float64 [s]), step (int64, time steps done), np (int64),
 ///                    format (string), format_version (int64)
 /// np = 0 is valid (empty datasets). The file is written as "part_NNNN.h5.tmp" and renamed
@@ -51,6 +52,7 @@ struct PartFrame {
     const float* disp = nullptr;             ///< 3*np [m]
     const float* strain = nullptr;           ///< np
     const std::uint8_t* broken = nullptr;    ///< np
+    const float* damage = nullptr;           ///< np
 };
 
 /// "data/part_0007.h5" for index 7 (at least 4 digits; "data/part_12345.h5" beyond).
@@ -71,7 +73,7 @@ struct PartData {
     std::vector<std::uint32_t> id;
     std::vector<std::uint8_t> type, excluded;
     std::vector<std::uint16_t> mk;
-    std::vector<float> disp, strain;          ///< solid fields (empty when absent)
+    std::vector<float> disp, strain, damage;  ///< solid fields (empty when absent)
     std::vector<std::uint8_t> broken;
     std::size_t np() const { return id.size(); }
 };

@@ -33,6 +33,7 @@ constexpr AttributeSpec kAttributes[] = {
 /// The solid fields (cases with VCPM solids).
 constexpr AttributeSpec kSolidAttributes[] = {
     {"disp", "Vector", "Float", 4, 3}, {"strain", "Scalar", "Float", 4, 1}, {"broken", "Scalar", "UChar", 1, 1},
+    {"damage", "Scalar", "Float", 4, 1},
 };
 
 /// `text` with the five XML special characters replaced by entities.

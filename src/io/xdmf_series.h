@@ -8,7 +8,8 @@
 /// particle, excluded ones included), XYZ geometry from "FILE:/pos", and node attributes
 /// vel (Vector, Float 4), rhop and press (Scalar, Float 4), type (UChar 1), mk (UInt 2),
 /// id (UInt 4) and excluded (UChar 1) — the element types of the part file (part_output.h);
-/// with VCPM solids also disp (Vector, Float 4), strain (Float 4) and broken (UChar 1).
+/// with VCPM solids also disp (Vector, Float 4), strain (Float 4), broken (UChar 1) and
+/// damage (Float 4).
 /// HDF5 paths are written as given, relative to the folder of parts.xdmf, so that an output
 /// folder can be moved or copied as a whole. Times are printed with "%.17g".
 #pragma once

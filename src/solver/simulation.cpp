@@ -245,11 +245,11 @@ void Simulation::output(double time, long long step) {
         press[i] = physics::taitPressure7(rhop[i], b, ovrho0);
         type[i] = std::uint8_t(case_.particles.type[i]);
     }
-    std::vector<float> disp, strain;
+    std::vector<float> disp, strain, damage;
     std::vector<std::uint8_t> broken;
     if (!setup_.solid.empty()) {
         checkSolidFinite(st, time);
-        solidFields(st, disp, strain, broken);
+        solidFields(st, disp, strain, broken, damage);
         const Vec3d g = case_.constants.gravity;
         ledger_->file.add(ledgerRow(time, st, setup_.solid, case_.particles.pos, setup_.nbound,
                                     case_.constants.massfluid, physics::Double3{g.x, g.y, g.z}));
@@ -260,6 +260,7 @@ void Simulation::output(double time, long long step) {
             f.disp = disp.data();
             f.strain = strain.data();
             f.broken = broken.data();
+            f.damage = damage.data();
         }
         f.index = out_index_;
         f.time = time;
@@ -295,6 +296,7 @@ void Simulation::output(double time, long long step) {
             extra.push_back({"disp", dmag});
             extra.push_back({"strain", strain});
             extra.push_back({"broken", broken});
+            extra.push_back({"damage", damage});
         }
         io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
     }

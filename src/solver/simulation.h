@@ -60,7 +60,7 @@ private:
     void output(double time, long long step);
     /// Per-particle solid fields of the part files (zero for other particles).
     void solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
-                     std::vector<std::uint8_t>& broken) const;
+                     std::vector<std::uint8_t>& broken, std::vector<float>& damage) const;
     void placeMoving(double time, double interval);
     /// Motion objects' poses at `time` and `time + interval`.
     std::vector<physics::RigidMotionGpu> motionsOver(double time, double interval) const;

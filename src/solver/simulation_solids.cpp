@@ -52,12 +52,13 @@ void Simulation::advanceSolid(double time, double dt_fluid, bool ledger) {
 }
 
 void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
-                             std::vector<std::uint8_t>& broken) const {
+                             std::vector<std::uint8_t>& broken, std::vector<float>& damage) const {
     const SolidSetup& so = setup_.solid;
     const std::size_t np = st.pos.size();
     disp.assign(3 * np, 0.f);
     strain.assign(np, 0.f);
     broken.assign(np, 0);
+    damage.assign(np, 0.f);
     for (std::uint32_t r = 0; r < so.nsolid; ++r) {
         const std::uint32_t id = so.first_solid + r;
         const physics::Double3 p = st.pos[id];
@@ -82,6 +83,7 @@ void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std:
         }
         strain[id] = intact > 0 ? float(sum / intact) : 0.f;
         broken[id] = std::uint8_t(nbroken);
+        damage[id] = so.count[r] > 0 ? float(nbroken) / float(so.count[r]) : 0.f;
     }
 }
 

@@ -10,6 +10,10 @@
 #include <string>
 
 #include "core/error.h"
+#include <fstream>
+#include <iterator>
+
+#include "io/part_output.h"
 #include "solver/solver_case.h"
 #include "solver_test_util.h"
 
@@ -135,4 +139,37 @@ TEST(SolidLoads, UnstableSolidStopsWithAClearError) {
         EXPECT_NE(std::string(e.what()).find("VCPM solid became unstable"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("VcpmDtCoef"), std::string::npos) << e.what();
     }
+}
+
+// The solid fields of the part files and the XDMF series, on the breaking bar: damage is the
+// lost fraction of a particle's bonds (0 where nothing broke), displacements are zero outside
+// the solid.
+TEST(SolidLoads, PartFilesCarryTheSolidFields) {
+    const std::string dir = scratch("fields");
+    const std::string kase = test::generateCaseFile(
+        dir, "bar", std::string(SEASPRING_SOURCE_DIR) + "/cases/breaking_bar/BreakingBar_Def.xml");
+    const test::SolverRun r = test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) {
+        o.save_h5 = true;
+        o.tmax = 0.05;
+        o.tout = 0.025;
+    });
+    ASSERT_GT(r.summary.broken_bonds, 0u);
+    const io::PartData d = io::readPartH5(dir + "/out/data/part_0002.h5");
+    ASSERT_EQ(d.damage.size(), d.np());
+    std::size_t damaged = 0;
+    for (std::size_t i = 0; i < d.np(); ++i) {
+        const bool solid = d.type[i] == std::uint8_t(ParticleType::Solid);
+        EXPECT_GE(d.damage[i], 0.f);
+        EXPECT_LE(d.damage[i], 1.f);
+        EXPECT_EQ(d.broken[i] > 0, d.damage[i] > 0.f) << i;
+        if (!solid) {
+            EXPECT_EQ(d.disp[3 * i] + d.disp[3 * i + 1] + d.disp[3 * i + 2], 0.f) << i;
+        }
+        damaged += d.damage[i] > 0.f ? 1 : 0;
+    }
+    EXPECT_GT(damaged, 0u);
+    std::ifstream x(dir + "/out/parts.xdmf");
+    const std::string xdmf((std::istreambuf_iterator<char>(x)), std::istreambuf_iterator<char>());
+    for (const char* name : {"disp", "strain", "broken", "damage"})
+        EXPECT_NE(xdmf.find(std::string("Attribute Name=\"") + name + "\""), std::string::npos) << name;
 }
