@@ -387,3 +387,15 @@ TEST(RunOptions, ApplyOverridesCommandLineWins) {
     EXPECT_EQ(q.visco_treatment, 1);
     EXPECT_EQ(q.visco, 0.02);
 }
+
+TEST(RunOptions, VcpmOptions) {
+    EXPECT_EQ(parseWith({}).solid_substeps, 0);
+    EXPECT_FALSE(parseWith({}).vcpm_coupling.has_value());
+    EXPECT_EQ(parseWith({"-vcpmsubsteps:4"}).solid_substeps, 4);
+    EXPECT_EQ(*parseWith({"-vcpmcoupling:1"}).vcpm_coupling, 1);
+    seaspring::solver::SolverParameters p;
+    applyOverrides(parseWith({"-vcpmcoupling:1"}), p);
+    EXPECT_EQ(p.vcpm_coupling, 1);
+    expectError({"-vcpmcoupling:3"}, "-vcpmcoupling:3: 3 must be 1..2");
+    expectError({"-vcpmsubsteps:-1"}, "-vcpmsubsteps:-1: -1 must be 0..1000000");
+}
