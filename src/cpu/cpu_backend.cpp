@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "cpu/cpu_solid.h"
+#include "physics/fluid_interaction.h"
 
 namespace seaspring::cpu {
 
@@ -189,6 +190,22 @@ public:
         if (solid_.empty()) return;
         solid_.restore();
         solid_.toBoundary(0.0, false, a_.pos.data(), a_.velrho.data());
+    }
+
+    void boundaryForces(std::vector<physics::Double3>& out) override {
+        physics::ParticleView v = a_.view();
+        const std::int64_t np = std::int64_t(nbound_) + nfluid_;
+#pragma omp parallel for schedule(static)
+        for (std::int64_t i = 0; i < np; ++i) physics::pressureAt(std::uint32_t(i), v, setup_.fluid);
+        std::vector<std::uint32_t> all(nbound_);
+        std::iota(all.begin(), all.end(), 0u);
+        std::vector<physics::Double3> sorted(nbound_);
+        if (setup_.physics.kernel == physics::KernelType::Wendland)
+            cpuSolidHydro_wendland(setup_.physics, a_, all.data(), nbound_, sorted.data(), setup_.fluid, setup_.grid);
+        else
+            cpuSolidHydro_cubic(setup_.physics, a_, all.data(), nbound_, sorted.data(), setup_.fluid, setup_.grid);
+        out.resize(nbound_);
+        for (std::uint32_t i = 0; i < nbound_; ++i) out[a_.id[i]] = sorted[i];
     }
 
     std::uint32_t activeFluid() const override { return nfluid_; }

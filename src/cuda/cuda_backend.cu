@@ -290,6 +290,30 @@ public:
         solid_.toBoundary(0.0, false, pos_.data(), velrho_.data());
     }
 
+    void boundaryForces(std::vector<physics::Double3>& out) override {
+        out.assign(nbound_, physics::Double3{0, 0, 0});
+        if (nbound_ == 0) return;
+        if (np_ > 0) {
+            pressureKernel<<<blocksFor(np_), kThreads>>>(std::uint32_t(np_), view(), setup_.fluid);
+            SEASPRING_CUDA_LAUNCH_CHECK();
+        }
+        std::vector<std::uint32_t> all(nbound_);
+        for (std::uint32_t i = 0; i < nbound_; ++i) all[i] = i;
+        DeviceBuffer<std::uint32_t> idx;
+        DeviceBuffer<physics::Double3> force(nbound_);
+        idx.upload(all);
+        DeviceArrays a = arrays();
+        if (setup_.physics.kernel == physics::KernelType::Wendland)
+            cudaSolidHydro_wendland(setup_.physics, a, idx.data(), nbound_, force.data(), setup_.fluid, setup_.grid);
+        else
+            cudaSolidHydro_cubic(setup_.physics, a, idx.data(), nbound_, force.data(), setup_.fluid, setup_.grid);
+        std::vector<physics::Double3> sorted;
+        std::vector<std::uint32_t> ids;
+        force.download(sorted);
+        id_.download(ids);
+        for (std::uint32_t i = 0; i < nbound_; ++i) out[ids[i]] = sorted[i];
+    }
+
     std::uint32_t activeFluid() const override { return nfluid_; }
     void synchronize() override { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
 

@@ -90,6 +90,10 @@ public:
     virtual void solidSave() = 0;
     /// ... and back to it (the boundary block gets the restored positions and velocities).
     virtual void solidRestore() = 0;
+    /// The hydrodynamic force on every boundary particle (fixed, moving, solid) for the current
+    /// state, id order [0, nbound) (the coupling ledger's wall force, at output times; the
+    /// pressures are recomputed first, nothing else changes).
+    virtual void boundaryForces(std::vector<physics::Double3>& out) = 0;
     /// Active fluid particles now.
     virtual std::uint32_t activeFluid() const = 0;
     /// Waits for queued device work (phase timers only; the CPU backend has none).

@@ -11,9 +11,15 @@
 namespace seaspring::solver {
 
 LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, const std::vector<Vec3d>& pos0,
-                    std::uint32_t first_fluid, double fluid_mass, const physics::Double3& g) {
+                    std::uint32_t first_fluid, double fluid_mass, const physics::Double3& g,
+                    const std::vector<physics::Double3>& boundary_force) {
     LedgerRow r;
     r.time = time;
+    for (std::uint32_t i = 0; i < so.first_solid && i < boundary_force.size(); ++i) {
+        r.wall_force.x += boundary_force[i].x;
+        r.wall_force.y += boundary_force[i].y;
+        r.wall_force.z += boundary_force[i].z;
+    }
     for (std::size_t i = first_fluid; i < st.pos.size(); ++i) {
         if (st.excl[i] != physics::kActive) continue;
         const physics::Float4 v = st.velrho[i];
@@ -77,16 +83,19 @@ LedgerFile::LedgerFile(const std::string& outdir)
     : path_((std::filesystem::path(outdir) / "ledger.csv").string()), f_(path_) {
     if (!f_) throw Error(path_ + ": cannot create the coupling ledger");
     f_ << "time,fluid_px,fluid_py,fluid_pz,solid_px,solid_py,solid_pz,force_x,force_y,force_z,"
-          "impulse_x,impulse_y,impulse_z,work,solid_kinetic,solid_elastic,solid_potential,fluid_kinetic\n";
+          "impulse_x,impulse_y,impulse_z,work,solid_kinetic,solid_elastic,solid_potential,fluid_kinetic,"
+          "wall_fx,wall_fy,wall_fz\n";
 }
 
 void LedgerFile::add(const LedgerRow& r) {
-    char line[640];
+    char line[768];
     std::snprintf(line, sizeof line,
-                  "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+                  "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
+                  "%.9g\n",
                   r.time, r.fluid_momentum.x, r.fluid_momentum.y, r.fluid_momentum.z, r.solid_momentum.x,
                   r.solid_momentum.y, r.solid_momentum.z, r.fluid_force.x, r.fluid_force.y, r.fluid_force.z,
-                  r.impulse.x, r.impulse.y, r.impulse.z, r.work, r.kinetic, r.elastic, r.potential, r.fluid_kinetic);
+                  r.impulse.x, r.impulse.y, r.impulse.z, r.work, r.kinetic, r.elastic, r.potential, r.fluid_kinetic,
+                  r.wall_force.x, r.wall_force.y, r.wall_force.z);
     f_ << line << std::flush;
     if (!f_) throw Error(path_ + ": cannot write the coupling ledger");
 }

@@ -25,12 +25,16 @@ struct LedgerRow {
     double elastic = 0;        ///< lattice energy U of the intact bonds [J]
     double potential = 0;      ///< solid gravitational energy relative to t = 0 [J]
     double fluid_kinetic = 0;  ///< fluid kinetic energy [J]
+    physics::Double3 wall_force{0, 0, 0};  ///< hydrodynamic force on the fixed and moving walls now [N]
 };
 
 /// The ledger row of a state (id order). `pos0`: initial positions (id order);
-/// `fluid_mass`: mass of a fluid particle; `gravity`: g.
+/// `fluid_mass`: mass of a fluid particle; `gravity`: g; `boundary_force`: the hydrodynamic
+/// force on each boundary particle now (Backend::boundaryForces; the walls are the ids below
+/// the first solid particle).
 LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, const std::vector<Vec3d>& pos0,
-                    std::uint32_t first_fluid, double fluid_mass, const physics::Double3& gravity);
+                    std::uint32_t first_fluid, double fluid_mass, const physics::Double3& gravity,
+                    const std::vector<physics::Double3>& boundary_force);
 
 /// Appends rows to OUTDIR/ledger.csv (header on creation).
 class LedgerFile {

@@ -251,8 +251,10 @@ void Simulation::output(double time, long long step) {
         checkSolidFinite(st, time);
         solidFields(st, disp, strain, broken, damage);
         const Vec3d g = case_.constants.gravity;
+        std::vector<physics::Double3> boundary_force;
+        if (case_.nfluid > 0) backend_->boundaryForces(boundary_force);
         ledger_->file.add(ledgerRow(time, st, setup_.solid, case_.particles.pos, setup_.nbound,
-                                    case_.constants.massfluid, physics::Double3{g.x, g.y, g.z}));
+                                    case_.constants.massfluid, physics::Double3{g.x, g.y, g.z}, boundary_force));
     }
     if (opt_.save_h5) {
         io::PartFrame f;

@@ -12,6 +12,8 @@
 #include "core/error.h"
 #include <fstream>
 #include <iterator>
+#include <sstream>
+#include <algorithm>
 
 #include "io/part_output.h"
 #include "solver/solver_case.h"
@@ -172,4 +174,47 @@ TEST(SolidLoads, PartFilesCarryTheSolidFields) {
     const std::string xdmf((std::istreambuf_iterator<char>(x)), std::istreambuf_iterator<char>());
     for (const char* name : {"disp", "strain", "broken", "damage"})
         EXPECT_NE(xdmf.find(std::string("Attribute Name=\"") + name + "\""), std::string::npos) << name;
+}
+
+// The coupling ledger's wall column: on the hydrostatic plate the plate and the walls together
+// carry the water's weight (time mean over the column's acoustic period, 10-100 ms), closer
+// than the plate alone; the horizontal wall forces cancel by symmetry.
+TEST(SolidLoads, LedgerWallsAndPlateCarryTheWaterWeight) {
+    const std::string dir = scratch("walls");
+    const std::string kase = test::generateCaseFile(
+        dir, "plate", std::string(SEASPRING_SOURCE_DIR) + "/cases/hydrostatic_plate/HydrostaticPlate_Def.xml", 0.025);
+    const test::SolverRun r = test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) {
+        o.tmax = 0.1;
+        o.tout = 0.002;
+    });
+    const double weight = -9.81 * r.kase.constants.massfluid * r.kase.nfluid;  // N/m, negative
+    std::ifstream in(dir + "/out/ledger.csv");
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> names;
+    for (std::istringstream h(line); std::getline(h, line, ',');) names.push_back(line);
+    auto column = [&](const std::string& n) { return std::size_t(std::find(names.begin(), names.end(), n) - names.begin()); };
+    const std::size_t ct = column("time"), cp = column("force_z"), cw = column("wall_fz"), cx = column("wall_fx");
+    ASSERT_LT(cx, names.size());
+    double plate = 0, walls = 0, wx = 0;
+    int rows = 0;
+    while (std::getline(in, line)) {
+        std::vector<double> v;
+        std::string cell;
+        for (std::istringstream s(line); std::getline(s, cell, ',');) v.push_back(std::stod(cell));
+        if (v[ct] < 0.01) continue;
+        plate += v[cp];
+        walls += v[cw];
+        wx = std::max(wx, std::fabs(v[cx]));
+        ++rows;
+    }
+    ASSERT_GT(rows, 20);
+    plate /= rows;
+    walls /= rows;
+    std::printf("plate %.1f N/m, walls %.1f N/m, together %.4f of the water weight %.1f N/m; |wall Fx| <= %.3g\n",
+                plate, walls, (plate + walls) / weight, weight, wx);
+    EXPECT_LT(walls, 0.0);  // the side walls carry part of the column through the corners
+    EXPECT_NEAR((plate + walls) / weight, 1.0, 0.02);
+    EXPECT_LT(std::fabs((plate + walls) / weight - 1.0), std::fabs(plate / weight - 1.0));
+    EXPECT_LT(wx, 1e-3 * std::fabs(weight));
 }
