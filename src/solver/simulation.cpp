@@ -462,7 +462,10 @@ RunSummary Simulation::run() {
     sum_.wall_time = seconds(t_start, Clock::now());
     sum_.ns_per_particle_step = step > 0 ? sum_.loop_time * 1e9 / (double(step) * double(sum_.np)) : 0;
     if (solids) {
-        if (solid_only) sum_.solid_substeps = step;
+        if (solid_only) {
+            sum_.solid_substeps = step;  // each step is one solid sub-step
+            sum_.omega_max = step > 0 ? 1 : 0;
+        }
         sum_.solid_dt = setup_.solid.dt;
         sum_.broken_bonds = brokenBonds(final_);
         if (solid_only && step > 0)
