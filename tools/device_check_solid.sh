@@ -18,7 +18,7 @@ nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | 
 parity() {  # name case_path nsteps extra-args...
   local name=$1 kase=$2 n=$3; shift 3
   local h=() extra=""
-  for b in "-cpu -threads:1" "-cpu -threads:16" "-gpu"; do
+  for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
     # shellcheck disable=SC2086
     "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$@" "$kase" "$work/o_$name" >"$work/$name.${b//[ :]/_}.log" 2>&1 ||
       { echo "FAILED $name $b"; tail -5 "$work/$name.${b//[ :]/_}.log"; }
@@ -27,7 +27,7 @@ parity() {  # name case_path nsteps extra-args...
   done
   local same=yes
   for x in "${h[@]}"; do [[ "$x" == "${h[0]}" ]] || same=NO; done
-  printf '%-26s cpu1=%s cpu16=%s gpu=%s identical=%s (%s)\n' "$name" "${h[@]}" "$same" "$extra" | tee -a "$table"
+  printf '%-26s cpu1=%s cpu2=%s cpu16=%s gpu=%s identical=%s (%s)\n' "$name" "${h[@]}" "$same" "$extra" | tee -a "$table"
 }
 "$bin/gencase" "$root/cases/dambreak3d/DamBreak3D_Def.xml" "$work/db3d" >/dev/null
 "$bin/gencase" "$root/cases/hanging_beam/HangingBeam_Def.xml" "$work/beam" -dp:0.01 >/dev/null

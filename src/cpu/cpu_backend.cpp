@@ -25,9 +25,9 @@ physics::DtMaxima cpuForces_cubic(const solver::PhysicsChoice&, CpuArrays&, std:
                                   std::uint32_t, const physics::FluidConstants&,
                                   const physics::CellGrid&);
 
-void cpuSolidHydro_wendland(const solver::PhysicsChoice&, CpuArrays&, const std::uint32_t*, std::uint32_t,
+void cpuHydroForces_wendland(const solver::PhysicsChoice&, CpuArrays&, const std::uint32_t*, std::uint32_t,
                             physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
-void cpuSolidHydro_cubic(const solver::PhysicsChoice&, CpuArrays&, const std::uint32_t*, std::uint32_t,
+void cpuHydroForces_cubic(const solver::PhysicsChoice&, CpuArrays&, const std::uint32_t*, std::uint32_t,
                          physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
 
 physics::DtMaxima cpuComputeForces(const solver::PhysicsChoice& choice, CpuArrays& a,
@@ -171,13 +171,7 @@ public:
     }
 
     void solidHydroForces() override {
-        if (solid_.empty()) return;
-        if (setup_.physics.kernel == physics::KernelType::Wendland)
-            cpuSolidHydro_wendland(setup_.physics, a_, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
-                                   setup_.grid);
-        else
-            cpuSolidHydro_cubic(setup_.physics, a_, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
-                                setup_.grid);
+        if (!solid_.empty()) hydroForces(solid_.slots(), solid_.size(), solid_.fluidForce());
     }
     void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
                     bool ledger) override {
@@ -197,13 +191,8 @@ public:
         const std::int64_t np = std::int64_t(nbound_) + nfluid_;
 #pragma omp parallel for schedule(static)
         for (std::int64_t i = 0; i < np; ++i) physics::pressureAt(std::uint32_t(i), v, setup_.fluid);
-        std::vector<std::uint32_t> all(nbound_);
-        std::iota(all.begin(), all.end(), 0u);
         std::vector<physics::Double3> sorted(nbound_);
-        if (setup_.physics.kernel == physics::KernelType::Wendland)
-            cpuSolidHydro_wendland(setup_.physics, a_, all.data(), nbound_, sorted.data(), setup_.fluid, setup_.grid);
-        else
-            cpuSolidHydro_cubic(setup_.physics, a_, all.data(), nbound_, sorted.data(), setup_.fluid, setup_.grid);
+        hydroForces(nullptr, nbound_, sorted.data());
         out.resize(nbound_);
         for (std::uint32_t i = 0; i < nbound_; ++i) out[a_.id[i]] = sorted[i];
     }
@@ -225,6 +214,14 @@ public:
     }
 
 private:
+    /// The hydrodynamic force on boundary particles slot[0..n) (null: the block [0, n)).
+    void hydroForces(const std::uint32_t* slot, std::uint32_t n, physics::Double3* out) {
+        if (setup_.physics.kernel == physics::KernelType::Wendland)
+            cpuHydroForces_wendland(setup_.physics, a_, slot, n, out, setup_.fluid, setup_.grid);
+        else
+            cpuHydroForces_cubic(setup_.physics, a_, slot, n, out, setup_.fluid, setup_.grid);
+    }
+
     /// Sorts [b, e) by (cell, id), excluded last; rebuilds `cell_start` for the active part.
     /// Returns the end of the active part.
     std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, std::vector<std::uint32_t>& cell_start) {

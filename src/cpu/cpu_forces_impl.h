@@ -25,15 +25,16 @@ inline physics::InteractionInputs interactionInputs(CpuArrays& a, bool sps) {
     return in;
 }
 
-/// The hydrodynamic force on each solid particle s (sorted index slot[s]) from the state of
-/// the last force evaluation (press_ovrho, tau as that evaluation left them).
+/// The hydrodynamic force on boundary particles: out[s] for sorted index slot[s] (the solid
+/// particles), or for sorted index s when `slot` is null (the whole boundary block [0, n)),
+/// from press_ovrho and tau as the last pressure pass left them.
 template <class Opt>
-void cpuSolidHydroFor(CpuArrays& a, const std::uint32_t* slot, std::uint32_t nsolid, physics::Double3* out,
-                      const physics::FluidConstants& c, const physics::CellGrid& g) {
+void cpuHydroForcesFor(CpuArrays& a, const std::uint32_t* slot, std::uint32_t n, physics::Double3* out,
+                       const physics::FluidConstants& c, const physics::CellGrid& g) {
     const physics::InteractionInputs in = interactionInputs(a, Opt::sps);
 #pragma omp parallel for schedule(dynamic, 64)
-    for (std::int64_t s = 0; s < std::int64_t(nsolid); ++s)
-        out[s] = physics::hydroForceOnBoundary<Opt>(slot[s], in, c, g);
+    for (std::int64_t s = 0; s < std::int64_t(n); ++s)
+        out[s] = physics::hydroForceOnBoundary<Opt>(slot ? slot[s] : std::uint32_t(s), in, c, g);
 }
 
 template <class Opt>

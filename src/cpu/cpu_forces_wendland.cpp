@@ -16,10 +16,10 @@ physics::DtMaxima cpuForces_wendland(const solver::PhysicsChoice& choice, CpuArr
     return m;
 }
 
-void cpuSolidHydro_wendland(const solver::PhysicsChoice& choice, CpuArrays& a, const std::uint32_t* slot,
+void cpuHydroForces_wendland(const solver::PhysicsChoice& choice, CpuArrays& a, const std::uint32_t* slot,
                          std::uint32_t nsolid, physics::Double3* out, const physics::FluidConstants& c,
                          const physics::CellGrid& g) {
-    auto run = [&](auto opt) { cpuSolidHydroFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
+    auto run = [&](auto opt) { cpuHydroForcesFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
     if (choice.dim == 2) solver::dispatchVisco<physics::WendlandKernel, 2>(choice, run);
     else solver::dispatchVisco<physics::WendlandKernel, 3>(choice, run);
 }

@@ -22,9 +22,9 @@ physics::DtMaxima cudaForces_cubic(const solver::PhysicsChoice&, DeviceArrays&, 
                                    std::uint32_t, const physics::FluidConstants&,
                                    const physics::CellGrid&);
 
-void cudaSolidHydro_wendland(const solver::PhysicsChoice&, DeviceArrays&, const std::uint32_t*, std::uint32_t,
+void cudaHydroForces_wendland(const solver::PhysicsChoice&, DeviceArrays&, const std::uint32_t*, std::uint32_t,
                              physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
-void cudaSolidHydro_cubic(const solver::PhysicsChoice&, DeviceArrays&, const std::uint32_t*, std::uint32_t,
+void cudaHydroForces_cubic(const solver::PhysicsChoice&, DeviceArrays&, const std::uint32_t*, std::uint32_t,
                           physics::Double3*, const physics::FluidConstants&, const physics::CellGrid&);
 
 physics::DtMaxima cudaComputeForces(const solver::PhysicsChoice& choice, DeviceArrays& a,
@@ -268,14 +268,7 @@ public:
     }
 
     void solidHydroForces() override {
-        if (solid_.empty()) return;
-        DeviceArrays a = arrays();
-        if (setup_.physics.kernel == physics::KernelType::Wendland)
-            cudaSolidHydro_wendland(setup_.physics, a, solid_.slots(), solid_.size(), solid_.fluidForce(),
-                                    setup_.fluid, setup_.grid);
-        else
-            cudaSolidHydro_cubic(setup_.physics, a, solid_.slots(), solid_.size(), solid_.fluidForce(), setup_.fluid,
-                                 setup_.grid);
+        if (!solid_.empty()) hydroForces(solid_.slots(), solid_.size(), solid_.fluidForce());
     }
     void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
                     bool ledger) override {
@@ -293,20 +286,11 @@ public:
     void boundaryForces(std::vector<physics::Double3>& out) override {
         out.assign(nbound_, physics::Double3{0, 0, 0});
         if (nbound_ == 0) return;
-        if (np_ > 0) {
-            pressureKernel<<<blocksFor(np_), kThreads>>>(std::uint32_t(np_), view(), setup_.fluid);
-            SEASPRING_CUDA_LAUNCH_CHECK();
-        }
-        std::vector<std::uint32_t> all(nbound_);
-        for (std::uint32_t i = 0; i < nbound_; ++i) all[i] = i;
-        DeviceBuffer<std::uint32_t> idx;
-        DeviceBuffer<physics::Double3> force(nbound_);
-        idx.upload(all);
-        DeviceArrays a = arrays();
-        if (setup_.physics.kernel == physics::KernelType::Wendland)
-            cudaSolidHydro_wendland(setup_.physics, a, idx.data(), nbound_, force.data(), setup_.fluid, setup_.grid);
-        else
-            cudaSolidHydro_cubic(setup_.physics, a, idx.data(), nbound_, force.data(), setup_.fluid, setup_.grid);
+        const std::uint32_t np = nbound_ + nfluid_;
+        pressureKernel<<<blocksFor(np), kThreads>>>(np, view(), setup_.fluid);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        DeviceBuffer<physics::Double3> force(nbound_);  // output times only
+        hydroForces(nullptr, nbound_, force.data());
         std::vector<physics::Double3> sorted;
         std::vector<std::uint32_t> ids;
         force.download(sorted);
@@ -339,6 +323,15 @@ public:
     }
 
 private:
+    /// The hydrodynamic force on boundary particles slot[0..n) (null: the block [0, n)).
+    void hydroForces(const std::uint32_t* slot, std::uint32_t n, physics::Double3* out) {
+        DeviceArrays a = arrays();
+        if (setup_.physics.kernel == physics::KernelType::Wendland)
+            cudaHydroForces_wendland(setup_.physics, a, slot, n, out, setup_.fluid, setup_.grid);
+        else
+            cudaHydroForces_cubic(setup_.physics, a, slot, n, out, setup_.fluid, setup_.grid);
+    }
+
     /// What the force drivers read and write (device pointers).
     DeviceArrays arrays() {
         DeviceArrays a;

@@ -17,10 +17,10 @@ physics::DtMaxima cudaForces_cubic(const solver::PhysicsChoice& choice, DeviceAr
     return m;
 }
 
-void cudaSolidHydro_cubic(const solver::PhysicsChoice& choice, DeviceArrays& a, const std::uint32_t* slot,
+void cudaHydroForces_cubic(const solver::PhysicsChoice& choice, DeviceArrays& a, const std::uint32_t* slot,
                           std::uint32_t nsolid, physics::Double3* out, const physics::FluidConstants& c,
                           const physics::CellGrid& g) {
-    auto run = [&](auto opt) { cudaSolidHydroFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
+    auto run = [&](auto opt) { cudaHydroForcesFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
     if (choice.dim == 2) solver::dispatchVisco<physics::CubicKernel, 2>(choice, run);
     else solver::dispatchVisco<physics::CubicKernel, 3>(choice, run);
 }

@@ -65,21 +65,21 @@ inline physics::InteractionInputs interactionInputs(const DeviceArrays& a, bool 
 
 template <class Opt>
 __global__ void __launch_bounds__(kForceThreads)
-solidHydroKernel(std::uint32_t nsolid, const std::uint32_t* slot, physics::InteractionInputs in,
-                 physics::FluidConstants c, physics::CellGrid g, physics::Double3* out) {
+hydroForcesKernel(std::uint32_t n, const std::uint32_t* slot, physics::InteractionInputs in,
+                  physics::FluidConstants c, physics::CellGrid g, physics::Double3* out) {
     const std::uint32_t s = blockIdx.x * blockDim.x + threadIdx.x;
-    if (s < nsolid) out[s] = physics::hydroForceOnBoundary<Opt>(slot[s], in, c, g);
+    if (s < n) out[s] = physics::hydroForceOnBoundary<Opt>(slot ? slot[s] : s, in, c, g);
 }
 
-/// The hydrodynamic force on each solid particle s (sorted index slot[s]) from the state of
-/// the last force evaluation (press_ovrho, tau as that evaluation left them), as
-/// cpu::cpuSolidHydroFor.
+/// The hydrodynamic force on boundary particles: out[s] for sorted index slot[s] (the solid
+/// particles), or for sorted index s when `slot` is null (the whole boundary block [0, n)),
+/// as cpu::cpuHydroForcesFor.
 template <class Opt>
-void cudaSolidHydroFor(DeviceArrays& a, const std::uint32_t* slot, std::uint32_t nsolid, physics::Double3* out,
-                       const physics::FluidConstants& c, const physics::CellGrid& g) {
-    if (nsolid == 0) return;
-    solidHydroKernel<Opt><<<(nsolid + kForceThreads - 1) / kForceThreads, kForceThreads>>>(
-        nsolid, slot, interactionInputs(a, Opt::sps), c, g, out);
+void cudaHydroForcesFor(DeviceArrays& a, const std::uint32_t* slot, std::uint32_t n, physics::Double3* out,
+                        const physics::FluidConstants& c, const physics::CellGrid& g) {
+    if (n == 0) return;
+    hydroForcesKernel<Opt><<<(n + kForceThreads - 1) / kForceThreads, kForceThreads>>>(
+        n, slot, interactionInputs(a, Opt::sps), c, g, out);
     SEASPRING_CUDA_LAUNCH_CHECK();
 }
 

@@ -17,10 +17,10 @@ physics::DtMaxima cudaForces_wendland(const solver::PhysicsChoice& choice, Devic
     return m;
 }
 
-void cudaSolidHydro_wendland(const solver::PhysicsChoice& choice, DeviceArrays& a, const std::uint32_t* slot,
+void cudaHydroForces_wendland(const solver::PhysicsChoice& choice, DeviceArrays& a, const std::uint32_t* slot,
                              std::uint32_t nsolid, physics::Double3* out, const physics::FluidConstants& c,
                              const physics::CellGrid& g) {
-    auto run = [&](auto opt) { cudaSolidHydroFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
+    auto run = [&](auto opt) { cudaHydroForcesFor<decltype(opt)>(a, slot, nsolid, out, c, g); };
     if (choice.dim == 2) solver::dispatchVisco<physics::WendlandKernel, 2>(choice, run);
     else solver::dispatchVisco<physics::WendlandKernel, 3>(choice, run);
 }

@@ -42,7 +42,6 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
                                                     sb.damping, sb.critstretch));
         const physics::VcpmElastic el = physics::vcpmElastic(sb.youngmod, sb.poissratio, sb.density);
         dt = std::min(dt, c.params.vcpm_dt_coef * dp / el.wave_speed);
-        s.wave_speed = std::max(s.wave_speed, el.wave_speed);
         const physics::VcpmMaterial& m = s.materials.back();
         s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + fmtg(sb.density) +
                                ", E " + fmtg(sb.youngmod) + ", nu " + fmtg(sb.poissratio) + ", c_S " +
@@ -94,7 +93,6 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
             physics::Double3& r = s.load_rate[best];
             f = physics::Double3{f.x + l.force.x, f.y + l.force.y, f.z + l.force.z};
             r = physics::Double3{r.x + l.rate.x, r.y + l.rate.y, r.z + l.rate.z};
-            s.load_particles.push_back(best);
             s.body_lines.push_back("point load on solid particle " + std::to_string(first + best) + " at (" +
                                    fmtg(s.pos[best].x) + ", " + fmtg(s.pos[best].y) + ", " + fmtg(s.pos[best].z) +
                                    "): F = (" + fmtg(l.force.x) + ", " + fmtg(l.force.y) + ", " + fmtg(l.force.z) +

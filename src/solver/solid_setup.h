@@ -31,7 +31,6 @@ struct SolidSetup {
     std::vector<double> mass;                ///< [nsolid] rho_S dp^D (reports)
     /// Point loads per particle, F = load_force + load_rate t (both empty without loads).
     std::vector<physics::Double3> load_force, load_rate;
-    std::vector<std::uint32_t> load_particles;  ///< solid index of each <pointload>
 
     std::uint32_t nclamp = 0;
     int clamp_max = 0;                       ///< slots per clamp node
@@ -42,7 +41,6 @@ struct SolidSetup {
     std::vector<std::int16_t> clamp_object;  ///< motion object moving it, -1 when fixed
 
     double dt = 0;                 ///< solid sub-step: min over bodies of VcpmDtCoef dp / c_S [s]
-    double wave_speed = 0;         ///< largest P-wave speed c_S [m/s]
     std::uint64_t bonds = 0, clamp_bonds = 0;  ///< solid-solid pairs (once), clamp bonds
     std::vector<std::string> body_lines;       ///< one printable line per body
 
