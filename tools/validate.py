@@ -198,7 +198,7 @@ def main(argv=None):
     if not names:
         print(f"no cases selected (cases with a validation.json in {a.cases_dir}: "
               f"{', '.join(spec.find_cases(a.cases_dir)) or 'none'})")
-        return 1
+        return 1 if (a.cases or a.all) else 0          # an empty CI set is not a failure
     cmd = "tools/validate.py " + " ".join(shlex.quote(x) for x in (sys.argv[1:] if argv is None else argv))
     stamp = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d"), "commit": git_commit(),
              "command": cmd}
