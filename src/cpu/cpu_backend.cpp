@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "cpu/cpu_gauges.h"
 #include "cpu/cpu_solid.h"
 #include "physics/fluid_interaction.h"
 
@@ -197,6 +198,14 @@ public:
         for (std::uint32_t i = 0; i < nbound_; ++i) out[a_.id[i]] = sorted[i];
     }
 
+    void setGauges(const solver::GaugeQueries& q) override {
+        gauge_q_ = q;
+        gauge_slot_ = gaugeSlots(q.ids, nbound_);
+    }
+    void gauges(solver::GaugeResults& out) override {
+        cpuGauges(setup_.physics, a_, nbound_, gauge_q_, gauge_slot_, setup_.fluid, setup_.grid, out);
+    }
+
     std::uint32_t activeFluid() const override { return nfluid_; }
 
     void download(solver::HostState& out) override {
@@ -275,6 +284,8 @@ private:
     std::vector<physics::Float4> scratch_f4_;
     std::vector<std::uint8_t> scratch_u8_;
     std::vector<physics::SymTensor> scratch_t_;
+    solver::GaugeQueries gauge_q_;
+    std::vector<std::uint32_t> gauge_slot_;
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "cuda/cuda_arrays.cuh"
 #include "cuda/cuda_forces_impl.cuh"
+#include "cuda/cuda_gauges.cuh"
 #include "cuda/cuda_solid.cuh"
 #include "cuda/device_buffer.cuh"
 
@@ -298,6 +299,11 @@ public:
         for (std::uint32_t i = 0; i < nbound_; ++i) out[ids[i]] = sorted[i];
     }
 
+    void setGauges(const solver::GaugeQueries& q) override { gauges_.set(q, nbound_); }
+    void gauges(solver::GaugeResults& out) override {
+        gauges_.evaluate(setup_.physics, arrays(), nbound_, setup_.fluid, setup_.grid, out);
+    }
+
     std::uint32_t activeFluid() const override { return nfluid_; }
     void synchronize() override { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
 
@@ -425,6 +431,7 @@ private:
     DeviceBuffer<physics::RigidMotionGpu> motions_;
     DeviceBuffer<physics::DtMaxima> block_maxima_, maxima_;
     CudaSolid solid_;
+    CudaGauges gauges_;
 };
 
 }  // namespace

@@ -50,6 +50,7 @@ const GeneratedCase& CaseBuilder::build() {
     if (pugi::xml_node m = casedef.child("motion")) out_.motion = parseMotion(*src_, m, ev_);
     readExecution(root.child("execution"));
     finishParticles();
+    readGauges(root.child("execution"));
     resolveParameters(root.child("execution").child("parameters"));
     printSummary();
     return out_;
@@ -143,6 +144,31 @@ void CaseBuilder::readExecution(pugi::xml_node execution) {
         }
         out_.solids = parseSolids(*src_, special, ev_, out_.mkconfig, log_);
     }
+}
+
+void CaseBuilder::readGauges(pugi::xml_node execution) {
+    const pugi::xml_node node = execution.child("special").child("gauges");
+    if (!node || XmlSource::isDisabled(node)) return;
+    out_.gauges = parseGauges(*src_, node, ev_, out_.constants.dp, out_.constants.h);
+    for (const GaugeSpec& g : out_.gauges.gauges) {
+        if (g.kind != GaugeKind::Force && g.kind != GaugeKind::SolidMarker) continue;
+        const bool marker = g.kind == GaugeKind::SolidMarker;
+        if (marker && out_.solids.empty())
+            throwInputError(src_->path(), g.line, "<solidmarker name=\"" + g.name +
+                                                      "\">: the case has no VCPM solid (<vcpmsolids>)");
+        if (g.target_mkbound < 0) continue;
+        bool found = false;
+        for (const MkBlock& b : out_.blocks)
+            if (b.type != ParticleType::Fluid && b.mk_user == g.target_mkbound &&
+                (!marker || b.type == ParticleType::Solid))
+                found = true;
+        if (!found)
+            throwInputError(src_->path(), g.line, "<" + std::string(gaugeElementName(g.kind)) + " name=\"" + g.name +
+                                                      "\">: target mkbound=" + std::to_string(g.target_mkbound) +
+                                                      (marker ? " is not a VCPM solid with particles"
+                                                              : " has no boundary particles"));
+    }
+    log_ << "Gauges: " << out_.gauges.gauges.size() << "\n";
 }
 
 void CaseBuilder::resolveParameters(pugi::xml_node parameters) {

@@ -17,6 +17,7 @@
 #include "gencase/particle_extraction.h"
 #include "gencase/simulation_domain.h"
 #include "gencase/vcpm_bonds.h"
+#include "gencase/gauge_spec.h"
 #include "gencase/vcpm_solids.h"
 #include "gencase/xml_source.h"
 
@@ -47,6 +48,7 @@ struct GeneratedCase {
     ParticleSet particles;
     std::vector<MkBlock> blocks;
     std::vector<SolidSpec> solids;
+    GaugeSet gauges;  ///< <special><gauges> (lengths resolved)
     BondNetwork bonds;
     BondStats bond_stats;
     MotionSet motion;
@@ -73,6 +75,8 @@ private:
     void readHeader(pugi::xml_node casedef);
     void drawGeometry(pugi::xml_node geometry);
     void readExecution(pugi::xml_node execution);
+    /// <special><gauges> (after finishParticles: needs h and the MK blocks).
+    void readGauges(pugi::xml_node execution);
     MkTypes classifyMks() const;
     void checkMkUsage() const;
     void finishParticles();

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <string>
 #include <filesystem>
 #include <ostream>
 #include <vector>
@@ -110,7 +111,17 @@ void buildResolvedCase(pugi::xml_document& doc, const XmlSource& src, const Gene
     root.append_copy(src.root().child("casedef"));
     pugi::xml_node exec = root.append_child("execution");
     pugi::xml_node in_exec = src.root().child("execution");
-    if (pugi::xml_node sp = in_exec.child("special")) exec.append_copy(sp);
+    if (pugi::xml_node sp = in_exec.child("special")) {
+        // <gauges> as read (plain numbers, lengths resolved): the solver needs no expressions.
+        pugi::xml_node copy = exec.append_copy(sp);
+        while (pugi::xml_node gs = copy.child("gauges")) copy.remove_child(gs);
+        for (pugi::xml_node c = copy.first_child(); c;) {  // disabled "_gauges" too
+            pugi::xml_node next = c.next_sibling();
+            if (std::string(c.name()) == "_gauges") copy.remove_child(c);
+            c = next;
+        }
+        if (!g.gauges.empty()) writeGauges(g.gauges, copy);
+    }
     pugi::xml_node params = exec.append_child("parameters");
     for (const auto& [key, value] : g.parameters) {
         pugi::xml_node p = params.append_child("parameter");

@@ -78,8 +78,10 @@ std::string frameXml(const std::string& h5_file, double time, std::size_t np, bo
     std::string x;
     x += "      <Grid Name=\"" + xmlEscape(stem) + "\" GridType=\"Uniform\">\n";
     x += "        <Time Value=\"" + std::string(time_text) + "\"/>\n";
-    x += "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" +
-         std::to_string(np) + "\" NodesPerElement=\"1\"/>\n";
+    // One vertex cell per particle: /id is the particle index (part files are in id order), so
+    // it is the connectivity; without it ParaView reads the points but no cells and shows nothing.
+    x += "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + std::to_string(np) +
+         "\" NodesPerElement=\"1\">\n          " + dataItem(file, "id", np, 1, "UInt", 4) + "\n        </Topology>\n";
     x += "        <Geometry GeometryType=\"XYZ\">\n";
     x += "          " + dataItem(file, "pos", np, 3, "Float", 8) + "\n";
     x += "        </Geometry>\n";

@@ -12,6 +12,7 @@
 
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
+#include "physics/gauges.h"
 #include "physics/particle_updates.h"
 #include "physics/time_integration.h"
 #include "solver/solid_setup.h"
@@ -58,6 +59,19 @@ struct HostState {
     std::vector<double> solid_work;              ///< ledger: work of solid_force on the solid [J]
 };
 
+/// What the gauges measure (solver/gauge_system.h), set once per run: gauge points do not move.
+struct GaugeQueries {
+    std::vector<physics::Float4> points;       ///< PosCell of each kernel-sum point
+    std::vector<physics::MaxzRow> maxz_rows;   ///< rows of cells of the maxz gauges
+    std::vector<std::uint32_t> ids;            ///< boundary or solid particles whose position is wanted
+};
+/// Their answers for the current state, in query order.
+struct GaugeResults {
+    std::vector<physics::GaugeSample> samples;
+    std::vector<double> maxz;
+    std::vector<physics::Double3> positions;
+};
+
 class Backend {
 public:
     virtual ~Backend() = default;
@@ -94,6 +108,10 @@ public:
     /// state, id order [0, nbound) (the coupling ledger's wall force, at output times; the
     /// pressures are recomputed first, nothing else changes).
     virtual void boundaryForces(std::vector<physics::Double3>& out) = 0;
+    /// Gauges: the queries of this run (after init) ...
+    virtual void setGauges(const GaugeQueries& q) = 0;
+    /// ... answered for the current state (after divide).
+    virtual void gauges(GaugeResults& out) = 0;
     /// Active fluid particles now.
     virtual std::uint32_t activeFluid() const = 0;
     /// Waits for queued device work (phase timers only; the CPU backend has none).

@@ -41,6 +41,7 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);
     j.value("outputs", s.outputs);
+    j.value("gauge_rows", s.gauge_rows);
     if (s.nsolid > 0) {
         j.beginObject("solids");
         j.value("particles", static_cast<long long>(s.nsolid));

@@ -18,6 +18,7 @@
 #include "io/xdmf_series.h"
 #include "physics/eos_tait.h"
 #include "solver/coupling_ledger.h"
+#include "solver/gauge_system.h"
 #include "solver/motion_player.h"
 #include "solver/state_hash.h"
 
@@ -164,6 +165,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     fs::create_directories(opt_.outdir);
     if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir);
     if (!setup_.solid.empty()) ledger_ = std::make_shared<Ledger>(opt_.outdir);
+    if (!c.gauges.empty()) gauges_ = std::make_shared<GaugeSystem>(c, setup_, opt_.outdir, log_);
     sum_.case_name = c.name;
     sum_.backend = backend_->name();
     sum_.device = backend_->deviceName();
@@ -302,6 +304,7 @@ void Simulation::output(double time, long long step) {
         }
         io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
     }
+    if (gauges_) gauges_->flush();
     ++out_index_;
     sum_.outputs = out_index_;
 }
@@ -317,6 +320,10 @@ RunSummary Simulation::run() {
     backend_->init(setup_);
     placeMoving(0.0, p.dt_ini > 0 ? p.dt_ini : h / cs0);
     backend_->divide();
+    if (gauges_) {
+        gauges_->attach(*backend_);
+        gauges_->evaluate(0.0, *backend_);
+    }
     output(0.0, 0);
 
     // SEASPRING_TIMERS=1: wall time per phase (synchronising the device after each phase).
@@ -359,7 +366,8 @@ RunSummary Simulation::run() {
             // No fluid: the solid advances by its own sub-step, in chunks up to the next output
             // (one sub-step per chunk when a clamp moves, so that it follows its motion law).
             dt = solid_dt;
-            long long n = std::max(1LL, (long long)std::ceil((std::min(next_out, tmax) - t) / dt - 1e-9));
+            const double until = std::min({next_out, tmax, gauges_ ? gauges_->nextTime() : tmax});
+            long long n = std::max(1LL, (long long)std::ceil((until - t) / dt - 1e-9));
             if (clamp_moves) n = 1;
             if (max_steps >= 0) n = std::min(n, max_steps - step);
             phase(t_integrate, [&] { solidOnlySteps(t, n, dt); return 0; });
@@ -408,6 +416,7 @@ RunSummary Simulation::run() {
             divide();
         }
         sum_.dt_last = dt;
+        if (gauges_) gauges_->evaluate(t, *backend_);
         const std::uint32_t active = backend_->activeFluid();
         if (!warned_out && case_.nfluid > 0 &&
             double(case_.nfluid - active) > p.wrn_parts_out / 100.0 * case_.nfluid) {
@@ -448,6 +457,10 @@ RunSummary Simulation::run() {
         log_ << line;
     }
     if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
+    if (gauges_) {
+        gauges_->flush();
+        sum_.gauge_rows = gauges_->rows();
+    }
     backend_->download(final_);
     sum_.state_hash = hashHex(stateHash(final_));
     for (std::uint8_t e : final_.excl) {

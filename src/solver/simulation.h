@@ -17,6 +17,8 @@
 
 namespace seaspring::solver {
 
+class GaugeSystem;
+
 /// What run.json reports.
 struct RunSummary {
     std::string case_name, backend, device;
@@ -30,6 +32,7 @@ struct RunSummary {
     double ns_per_particle_step = 0;
     double dt_last = 0;
     int outputs = 0;
+    long long gauge_rows = 0;  ///< CSV rows written by the gauges
     std::string stop_reason;
     std::string state_hash;
     std::string options;  ///< physics options, one line
@@ -86,6 +89,7 @@ private:
     std::shared_ptr<Output> out_;
     struct Ledger;
     std::shared_ptr<Ledger> ledger_;
+    std::shared_ptr<GaugeSystem> gauges_;  ///< null when the case has no gauges
     OutputObserver observer_;
 };
 

@@ -423,14 +423,15 @@ void readSpecial(const XmlSource& src, pugi::xml_node special, SolverCase& c) {
     for (pugi::xml_node n : special.children()) {
         if (XmlSource::isDisabled(n)) continue;
         const std::string name = n.name();
-        if (name == "gauges" || name == "savedt")
-            c.notes.push_back(src.where(n) + ": <" + name +
-                              "> is not evaluated by seaspring (ignored)");
+        if (name == "savedt")
+            c.notes.push_back(src.where(n) + ": <" + name + "> is not evaluated by seaspring (ignored)");
+        else if (name == "gauges")
+            continue;  // read after the constants (loadSolverCase)
         else if (name != "vcpmsolids" && name != "flexstrucs")
             src.fail(
                 n,
                 "is not supported by seaspring (supported in <special>: vcpmsolids, flexstrucs, "
-                "gauges and savedt, the last two ignored)");
+                "gauges and savedt, the last ignored)");
     }
 }
 
@@ -469,6 +470,9 @@ SolverCase loadSolverCase(const std::string& path) {
     const pugi::xml_node constants = src.child(exec, "constants");
     c.constants = gencase::readConstants(src, constants);
     checkConstants(src, constants, c.constants, c.nfluid > 0, c.nfixed + c.nmoving > 0);
+
+    if (pugi::xml_node g = exec.child("special").child("gauges"); g && !XmlSource::isDisabled(g))
+        c.gauges = gencase::parseGauges(src, g, gencase::ExpressionEvaluator{}, c.constants.dp, c.constants.h);
 
     const pugi::xml_node params = src.child(exec, "parameters");
     c.params = readParameters(ParameterTable(src, params, c.nfluid > 0));

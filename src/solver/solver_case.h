@@ -10,7 +10,7 @@
 /// the XML and the particle file. Keys that have no effect in the chosen configuration
 /// (SlipMode and NoPenetration with DBC, ShiftCoef and ShiftTFS without shifting) are
 /// checked to be numbers and otherwise ignored, as DualSPHysics does.
-/// `<special><gauges>` and `<savedt>` are not evaluated; they are reported in `notes`.
+/// `<special><gauges>` are read (gencase::parseGauges); `<savedt>` is not evaluated (a note).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +21,7 @@
 #include "core/particle_set.h"
 #include "core/vec3.h"
 #include "gencase/constants.h"
+#include "gencase/gauge_spec.h"
 #include "gencase/motion.h"
 
 namespace seaspring::solver {
@@ -89,6 +90,7 @@ struct SolverCase {
     std::optional<BondNetwork> bonds;  ///< only when the case has solids
     std::uint32_t solid_bodies = 0;    ///< <solid> entries of the resolved <vcpmsolids>
     std::vector<SolidBody> solids;     ///< the same entries, in file order
+    gencase::GaugeSet gauges;          ///< <special><gauges> (empty when none)
     std::vector<std::string> notes;    ///< "FILE:LINE: ..." for sections read but not used
 };
 

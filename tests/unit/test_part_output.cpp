@@ -329,6 +329,9 @@ void expectSeries(const std::string& path, const std::vector<FrameInfo>& frames)
         EXPECT_STREQ(topo.attribute("TopologyType").value(), "Polyvertex");
         EXPECT_EQ(topo.attribute("NumberOfElements").value(), np);
         EXPECT_STREQ(topo.attribute("NodesPerElement").value(), "1");
+        const pugi::xml_node conn = onlyChild(topo, "DataItem");  // vertex cells: ParaView shows them
+        EXPECT_EQ(std::string(conn.child_value()), want.file + ":/id");
+        EXPECT_EQ(conn.attribute("Dimensions").value(), np);
         const pugi::xml_node geo = onlyChild(grid, "Geometry");
         EXPECT_STREQ(geo.attribute("GeometryType").value(), "XYZ");
         const pugi::xml_node pos = onlyChild(geo, "DataItem");
@@ -418,7 +421,7 @@ TEST(XdmfSeries, NumberTypesMatchThePartFile) {
         H5Dclose(set);
         ++checked;
     }
-    EXPECT_EQ(checked, 8);  // pos + 7 attributes
+    EXPECT_EQ(checked, 9);  // the connectivity (/id), pos + 7 attributes
 }
 
 TEST(XdmfSeries, SpecialCharactersInPathsAreEscaped) {

@@ -1,0 +1,122 @@
+// SeaSpring — MIT licence.
+/// \file gauges.h
+/// \brief The measurements of `<special><gauges>` (DualSPHysics' JGauge* conventions), one
+///        source for both backends:
+///   - kernel sums at a point over its fluid neighbours (velocity, pressure, SWL mass):
+///       wsum = sum_j V_j W_j,  V_j = m_j / rho_j,
+///       v = sum_j V_j W_j v_j / wsum,  p = sum_j V_j W_j p_j / wsum  (Shepard-corrected;
+///       no correction, value 0, where wsum < kclimit: the point is not in the fluid),
+///       mass = sum_j V_j W_j m_j (SWL: ~ m inside the fluid, falls to 0 across the surface);
+///   - the free surface along a line of points: the first point whose mass drops below
+///     masslimit after one above it, linearly interpolated between the two (JGaugeSwl);
+///   - the highest fluid particle within distlimit (horizontally) of a vertical line (JGaugeMaxZ).
+/// Unlike DualSPHysics' gauges, a particle exactly at the point counts (it carries the largest
+/// weight; only a particle's pair with itself is excluded in the force loops).
+/// Sums run in the neighbour order of the force loops (rows by z then y, cells sorted by cell
+/// then id) and accumulate in double, so both backends give the same bits.
+#pragma once
+
+#include <cstdint>
+
+#include "physics/cell_grid.h"
+#include "physics/eos_tait.h"
+#include "physics/fluid_constants.h"
+#include "physics/fluid_interaction.h"
+#include "physics/sph_types.h"
+
+namespace seaspring::physics {
+
+/// Kernel sums of one gauge point.
+struct GaugeSample {
+    double wsum = 0;                ///< sum V W (1 inside the fluid, less near a surface)
+    double mass = 0;                ///< sum V W m [kg]
+    double vx = 0, vy = 0, vz = 0;  ///< sum V W v
+    double press = 0;               ///< sum V W p
+};
+
+/// The kernel sums at a gauge point whose PosCell (makePosCell) is `pt`, over the fluid block
+/// (`cell_start_fluid` holds absolute indices into poscell/velrho).
+template <class Kernel, int kDim>
+SEASPRING_HD inline GaugeSample gaugeSampleAt(const Float4& pt, const std::uint32_t* cell_start_fluid,
+                                              const Float4* poscell, const Float4* velrho,
+                                              const FluidConstants& c, const CellGrid& g) {
+    GaugeSample s;
+    const SearchBox box = searchBox<kDim>(pt, g);
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, pt.z, g.cellsizef, box.margin);
+        for (int y = box.y0; y <= box.y1; ++y) {
+            std::uint32_t pb, pe;
+            if (!rowCandidates<kDim>(box, pt, y, z, gz, cell_start_fluid, c, g, pb, pe)) continue;
+            const Float4 par = rowFrame(pt, g.cellsizef * float(box.cay - y), rowdz);
+            for (std::uint32_t j = pb; j < pe; ++j) {
+                float drx, dry, drz;
+                const float rr2 = pairOffset<kDim>(par, poscell[j], box.cax, g, drx, dry, drz);
+                if (!(rr2 <= c.ker.kernelsize2)) continue;  // r = 0 counts (not a self-pair)
+                const Float4 vj = velrho[j];
+                const double w = double(Kernel::value(rr2, c.ker)) * (double(c.massfluid) / double(vj.w));
+                s.wsum += w;
+                s.mass += w * double(c.massfluid);
+                s.vx += w * double(vj.x);
+                s.vy += w * double(vj.y);
+                s.vz += w * double(vj.z);
+                s.press += w * double(taitPressure7(vj.w, c.cteb, c.ovrhop0));
+            }
+        }
+    }
+    return s;
+}
+
+/// A sum divided by wsum (Shepard correction), or 0 where wsum < kclimit.
+SEASPRING_HD inline double shepard(double sum, double wsum, double kclimit) {
+    return wsum >= kclimit && wsum > 0.0 ? sum / wsum : 0.0;
+}
+
+/// The free surface along the line point0 + k dir, k = 0..n-1, from the SWL masses there
+/// (JGaugeSwl): the first point below masslimit that follows one above it, moved back towards
+/// that one by linear interpolation. No crossing: the last point when every point was above
+/// the limit, point0 when none was (or the line is empty).
+SEASPRING_HD inline Double3 swlSurface(const double* mass, int n, const Double3& point0, const Double3& dir,
+                                       double masslimit) {
+    double mpre = 0.0;
+    bool above = false;
+    for (int k = 0; k < n; ++k) {
+        const double m = mass[k];
+        if (m > masslimit) {
+            mpre = m;
+            above = true;
+        } else if (m < masslimit && above) {
+            const double f = (masslimit - mpre) / (m - mpre) - 1.0;  // in [-1, 0]
+            const double s = double(k) + f;
+            return Double3{point0.x + dir.x * s, point0.y + dir.y * s, point0.z + dir.z * s};
+        }
+    }
+    const double s = above ? double(n - 1) : 0.0;
+    return Double3{point0.x + dir.x * s, point0.y + dir.y * s, point0.z + dir.z * s};
+}
+
+/// One row of cells (y, z) of a maxz gauge's column: fluid cells x0..x1 are searched for the
+/// highest particle within sqrt(r2) of the vertical line through (lx, ly) (2D: x only).
+struct MaxzRow {
+    std::uint32_t row_first_cell;  ///< linear index of cell (0, y, z)
+    int x0, x1;                    ///< cell span along x
+    double lx, ly, r2;
+};
+
+/// The highest z in one row (-1e300 when no fluid particle is in reach); positions `pos`
+/// indexed as cell_start_fluid.
+template <int kDim>
+SEASPRING_HD inline double maxzRowAt(const MaxzRow& r, const std::uint32_t* cell_start_fluid, const Double3* pos) {
+    double zmax = -1e300;
+    const std::uint32_t pb = cell_start_fluid[r.row_first_cell + std::uint32_t(r.x0)];
+    const std::uint32_t pe = cell_start_fluid[r.row_first_cell + std::uint32_t(r.x1) + 1u];
+    for (std::uint32_t j = pb; j < pe; ++j) {
+        const Double3 p = pos[j];
+        const double dx = r.lx - p.x;
+        const double dy = kDim == 3 ? r.ly - p.y : 0.0;
+        if (dx * dx + dy * dy <= r.r2 && p.z > zmax) zmax = p.z;
+    }
+    return zmax;
+}
+
+}  // namespace seaspring::physics
