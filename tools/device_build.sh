@@ -23,3 +23,6 @@ cp "$root/../shared/dualsphysics-cases/Spheric2Dam_01M.xml" \
 mkdir -p "$build/shared-cases/flexstruc"
 cp "$root/../shared/dualsphysics-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" \
    "$root/../shared/dualsphysics-cases/flexstruc/DambreakGateTimeSeries.csv" "$build/shared-cases/flexstruc/"
+# The reference data and DualSPHysics cases for tools/validate.py (SEASPRING_SHARED=build-dev/shared).
+mkdir -p "$build/shared"
+cp -r "$root/../shared/validation-data" "$root/../shared/dualsphysics-cases" "$build/shared/"

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Runs ON the GPU machine (device tool), from the repository root, with build-dev carried
+# (tools/device_build.sh makes it, and copies ../shared's reference data into
+# build-dev/shared). Steps, each optional:
+#   parity      gauge CSVs and state hashes of small gauge cases: cpu -threads:1, -threads:16, -gpu
+#   validate    tools/validate.py over every case with a validation.json (VALIDATE_ARGS, default
+#               "--all --resolution all"), GPU; the report is tarred into $OUT/validation.tgz
+#   stability   the hard cases of STABILITY ("name:xml:dp:tmax ..."), GPU, one table
+# Usage: tools/device_validate.sh parity validate stability
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export SEASPRING_SHARED="$root/build-dev/shared"
+bin="$root/build-dev/bin"
+out="${OUT:-/tmp/seaspring_out}"
+work=/tmp/seaspring_val
+mkdir -p "$out" "$work"
+nvidia-smi --query-gpu=name,memory.total --format=csv,noheader | tee "$out/gpu.txt"
+
+step_parity() {
+  local table="$out/gauge_parity.txt"
+  : >"$table"
+  "$bin/gencase" "$SEASPRING_SHARED/dualsphysics-cases/CaseDambreakVal2D_Def.xml" "$work/val2d" -dp:0.02 >/dev/null
+  "$bin/gencase" "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" "$work/antoci" -dp:0.002 >/dev/null
+  for spec in "val2d:600" "antoci:400"; do
+    local name=${spec%%:*} n=${spec##*:} ref="" same=yes hashes=""
+    for b in "-cpu -threads:1" "-cpu -threads:16" "-gpu"; do
+      local o="$work/o_${name}_${b//[^a-z0-9]/}"
+      # shellcheck disable=SC2086
+      "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$work/$name" "$o" >"$o.log" 2>&1 || echo "FAILED $name $b"
+      hashes+=" $(grep -o 'State hash: [0-9a-f]*' "$o.log" | cut -d' ' -f3)"
+      local sum
+      sum=$(cat "$o"/gauges/*.csv | md5sum | cut -c1-12)
+      [[ -z "$ref" ]] && ref=$sum
+      [[ "$sum" == "$ref" ]] || same=NO
+      hashes+="/$sum($(ls "$o"/gauges | wc -l) files)"
+    done
+    printf '%-8s %s gauges-identical=%s\n' "$name" "$hashes" "$same" | tee -a "$table"
+  done
+}
+
+step_validate() {
+  # shellcheck disable=SC2086
+  python3 "$root/tools/validate.py" ${VALIDATE_ARGS:---all --resolution all} --backend gpu --bin "$bin" \
+    --out "$work/runs" --report "$work/report" 2>&1 | tee "$out/validate.log" | tail -40
+  tar czf "$out/validation.tgz" -C "$work" report
+}
+
+step_stability() {
+  local table="$out/stability.txt"
+  printf '%-22s %10s %9s %8s %9s %8s %9s %s\n' case particles tmax reached steps wall_s broken note | tee "$table"
+  for spec in ${STABILITY:-}; do
+    IFS=: read -r name xml dp tmax <<<"$spec"
+    local d="$work/stab_$name"
+    mkdir -p "$d"
+    "$bin/gencase" "$root/$xml" "$d/case" -dp:"$dp" >"$d/gencase.log" 2>&1 || { echo "$name: gencase failed"; tail -3 "$d/gencase.log"; continue; }
+    timeout "${STAB_TIMEOUT:-400}" "$bin/seaspring" -gpu -tmax:"$tmax" -sv:h5 -progress:30 "$d/case" "$d" >"$d/run.log" 2>&1
+    local rc=$?
+    python3 - "$d" "$name" "$tmax" "$rc" <<'EOF' | tee -a "$table"
+import json, sys, os
+d, name, tmax, rc = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
+try:
+    r = json.load(open(os.path.join(d, "run.json")))
+except Exception:
+    print(f"{name:22s} run.json missing (exit {rc})"); sys.exit()
+s = r.get("solids", {})
+note = r.get("stop_reason", "") + (f"; exit {rc}" if rc else "")
+ex = r.get("excluded", {})
+note += f"; excluded {sum(ex.values())}; solid {s.get('particles', 0)}; {r.get('ns_per_particle_step', 0):.2f} ns/p/step"
+print(f"{name:22s} {r['particles']['total']:>10} {tmax:9.3f} {r.get('physical_time_s', 0):8.4f} "
+      f"{r.get('steps', 0):9d} {r.get('wall_time_s', 0):8.1f} {s.get('broken_bonds', 0):>9} {note}")
+EOF
+    tail -4 "$d/run.log" >"$out/stab_$name.log"
+    [[ -f "$d/ledger.csv" ]] && tail -3 "$d/ledger.csv" >>"$out/stab_$name.log"
+  done
+}
+
+for s in "$@"; do "step_$s"; done
