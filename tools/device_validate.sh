@@ -3,8 +3,8 @@
 # (tools/device_build.sh makes it, and copies ../shared's reference data into
 # build-dev/shared). Steps, each optional:
 #   parity      gauge CSVs and state hashes of small gauge cases: cpu -threads:1, -threads:16, -gpu
-#   validate    tools/validate.py over every case with a validation.json (VALIDATE_ARGS, default
-#               "--all --resolution all"), GPU; the report is tarred into $OUT/validation.tgz
+#   validate    tools/validate.py, case by case, over VALIDATE_CASES (VALIDATE_ARGS, default
+#               "--resolution all"), GPU; the report is tarred into $OUT/validation.tgz
 #   stability   the hard cases of STABILITY ("name:xml:dp:tmax ..."), GPU, one table
 # Usage: tools/device_validate.sh parity validate stability
 set -uo pipefail
@@ -39,11 +39,14 @@ step_parity() {
   done
 }
 
-step_validate() {
-  # shellcheck disable=SC2086
-  python3 "$root/tools/validate.py" ${VALIDATE_ARGS:---all --resolution all} --backend gpu --bin "$bin" \
-    --out "$work/runs" --report "$work/report" 2>&1 | tee "$out/validate.log" | tail -40
-  tar czf "$out/validation.tgz" -C "$work" report
+step_validate() {  # case by case, the report tarred after each (a killed call keeps what ran)
+  for c in ${VALIDATE_CASES:-}; do
+    # shellcheck disable=SC2086
+    python3 "$root/tools/validate.py" --cases "$c" ${VALIDATE_ARGS:---resolution all} --backend gpu --bin "$bin" \
+      --out "$work/runs" --report "$work/report" >>"$out/validate.log" 2>&1
+    tail -3 "$out/validate.log"
+    tar czf "$out/validation.tgz" -C "$work" report
+  done
 }
 
 step_stability() {
@@ -57,7 +60,8 @@ step_stability() {
     timeout "${STAB_TIMEOUT:-400}" "$bin/seaspring" -gpu -tmax:"$tmax" -sv:h5 -progress:30 "$d/case" "$d" >"$d/run.log" 2>&1
     local rc=$?
     python3 - "$d" "$name" "$tmax" "$rc" <<'EOF' | tee -a "$table"
-import json, sys, os
+import glob, json, os, sys
+import numpy as np
 d, name, tmax, rc = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4])
 try:
     r = json.load(open(os.path.join(d, "run.json")))
@@ -66,13 +70,34 @@ except Exception:
 s = r.get("solids", {})
 note = r.get("stop_reason", "") + (f"; exit {rc}" if rc else "")
 ex = r.get("excluded", {})
-note += f"; excluded {sum(ex.values())}; solid {s.get('particles', 0)}; {r.get('ns_per_particle_step', 0):.2f} ns/p/step"
+note += f"; fluid excluded {sum(ex.values())}; {r.get('ns_per_particle_step', 0):.2f} ns/p/step"
+try:  # the solid at the last output: every particle finite, largest displacement
+    import h5py
+    parts = sorted(glob.glob(os.path.join(d, "data", "part_*.h5")))
+    first, last = h5py.File(parts[0], "r"), h5py.File(parts[-1], "r")
+    sol = last["type"][:] == 2
+    p1, p0 = last["pos"][:][sol], first["pos"][:][sol]
+    fin = np.isfinite(p1).all(axis=1)
+    note += f"; solid {sol.sum()} particles, {int((~fin).sum())} not finite, max |disp| {np.linalg.norm(p1[fin] - p0[fin], axis=1).max():.4g} m"
+except Exception as e:
+    note += f"; part files: {e}"
+try:  # the energy ledger: largest solid energies over the run, work of the fluid force
+    L = np.genfromtxt(os.path.join(d, "ledger.csv"), delimiter=",", names=True)
+    allfin = all(np.isfinite(L[n]).all() for n in L.dtype.names)
+    note += (f"; ledger rows {len(L)}, max KE {L['solid_kinetic'].max():.4g} J, max elastic {L['solid_elastic'].max():.4g} J, "
+             f"final work {L['work'][-1]:.4g} J, all finite {allfin}")
+except Exception as e:
+    note += f"; ledger: {e}"
 print(f"{name:22s} {r['particles']['total']:>10} {tmax:9.3f} {r.get('physical_time_s', 0):8.4f} "
       f"{r.get('steps', 0):9d} {r.get('wall_time_s', 0):8.1f} {s.get('broken_bonds', 0):>9} {note}")
 EOF
     tail -4 "$d/run.log" >"$out/stab_$name.log"
     [[ -f "$d/ledger.csv" ]] && tail -3 "$d/ledger.csv" >>"$out/stab_$name.log"
   done
+  # gauges, ledgers, summaries and logs of every run, plus the part file at STAB_PICTURE_PART
+  # (e.g. "sluice3d:0008", for a picture made where ParaView is installed)
+  (cd "$work" && tar czf "$out/stability.tgz" stab_*/gauges stab_*/run.json stab_*/ledger.csv stab_*/run.log \
+     stab_*/case.xml $(for p in ${STAB_PICTURE_PART:-}; do echo "stab_${p%%:*}/data/part_${p##*:}.h5"; done) 2>/dev/null)
 }
 
 for s in "$@"; do "step_$s"; done

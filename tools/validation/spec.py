@@ -44,6 +44,9 @@ class Check:
     window: Optional[List[float]] = None
     use_band: bool = False
     key: str = ""                       # JSON path, for messages
+    # extension: tolerances for one resolution, e.g. {"coarse": {"rel_tol": 0.45}} (CI's coarse
+    # runs judged by a regression bound, the fine runs by the published acceptance)
+    by_resolution: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -185,7 +188,7 @@ def _reference(r, d, key, root):
 
 
 def _check(r, d, key, refs, qkey):
-    r.obj(d, key, {"metric", "against", "rel_tol", "abs_tol", "window", "use_band"})
+    r.obj(d, key, {"metric", "against", "rel_tol", "abs_tol", "window", "use_band", "by_resolution"})
     metric = r.get(d, key, "metric", "str")
     if metric not in METRICS:
         r.fail(f"{key}.metric", f"expected one of {', '.join(METRICS)}", metric)
@@ -199,6 +202,15 @@ def _check(r, d, key, refs, qkey):
         r.fail(key, "needs rel_tol or abs_tol", d)
     c.window = r.window(d, key)
     c.use_band = r.get(d, key, "use_band", "bool", required=False, default=False)
+    for res, tol in (r.get(d, key, "by_resolution", "dict", required=False) or {}).items():
+        bkey = f"{key}.by_resolution.{res}"
+        if res not in RESOLUTIONS:
+            r.fail(bkey, f"expected one of {', '.join(RESOLUTIONS)}", res)
+        r.obj(tol, bkey, {"rel_tol", "abs_tol"})
+        rel, ab = r.positive(tol, bkey, "rel_tol", False, True), r.positive(tol, bkey, "abs_tol", False, True)
+        if rel is None and ab is None:
+            r.fail(bkey, "needs rel_tol or abs_tol", tol)
+        c.by_resolution[res] = (rel, ab)
     ref = refs[c.against]
     if ref.kind == "analytic" and metric == "peak_time":
         r.fail(f"{key}.against", "peak_time needs a reference with a time series, "
