@@ -22,7 +22,12 @@ step_parity() {
   : >"$table"
   "$bin/gencase" "$SEASPRING_SHARED/dualsphysics-cases/CaseDambreakVal2D_Def.xml" "$work/val2d" -dp:0.02 >/dev/null
   "$bin/gencase" "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" "$work/antoci" -dp:0.002 >/dev/null
-  for spec in "val2d:600" "antoci:400"; do
+  "$bin/gencase" "$root/tests/data/gauges/StillTank_Def.xml" "$work/tank" >/dev/null
+  local specs=("val2d:600" "antoci:400" "tank:300")
+  if [[ -f "$root/cases/dualsphysics_dambreak3d/CaseDambreak_Def.xml" ]]; then
+    "$bin/gencase" "$root/cases/dualsphysics_dambreak3d/CaseDambreak_Def.xml" "$work/ds3d" -dp:0.017 >/dev/null && specs+=("ds3d:200")
+  fi
+  for spec in "${specs[@]}"; do
     local name=${spec%%:*} n=${spec##*:} ref="" same=yes hashes=""
     for b in "-cpu -threads:1" "-cpu -threads:16" "-gpu"; do
       local o="$work/o_${name}_${b//[^a-z0-9]/}"

@@ -37,38 +37,15 @@ std::vector<std::vector<double>> readCsv(const std::string& path, const std::str
     return rows;
 }
 
-/// 2D tank 0.4 m wide, water 0.2 m deep (dp 0.01), and one gauge of every fluid kind.
-std::string stillTank(const std::string& gauges) {
-    return std::string(R"(<?xml version="1.0" encoding="UTF-8" ?>
-<case><casedef><constantsdef><gravity x="0" y="0" z="-9.81" /><rhop0 value="1000" /><hswl value="0" auto="true" />
-    <gamma value="7" /><speedsystem value="0" auto="true" /><coefsound value="20" />
-    <speedsound value="0" auto="true" /><coefh value="1.0" /><cflnumber value="0.2" /></constantsdef>
-  <mkconfig boundcount="240" fluidcount="9" />
-  <geometry><definition dp="0.01"><pointmin x="-0.05" y="0" z="-0.05" /><pointmax x="0.45" y="0" z="0.35" /></definition>
-  <commands><mainlist>
-    <setdrawmode mode="full" />
-    <setmkfluid mk="0" /><drawbox><boxfill>solid</boxfill><point x="0" y="-1" z="0" /><size x="0.4" y="2" z="0.2" /></drawbox>
-    <setmkbound mk="0" /><drawbox><boxfill>bottom | left | right</boxfill><point x="0" y="-1" z="0" /><size x="0.4" y="2" z="0.3" /><layers vdp="0,1,2" /></drawbox>
-  </mainlist></commands></geometry>
-</casedef>
-<execution><special>)") + gauges + R"(</special><parameters>
-  <parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="1" />
-  <parameter key="Visco" value="0.01" /><parameter key="DensityDT" value="3" />
-  <parameter key="TimeMax" value="0.3" /><parameter key="TimeOut" value="0.1" />
-</parameters></execution></case>
-)";
+/// The still tank of tests/data/gauges/StillTank_Def.xml (2D, 0.4 m wide, water 0.2 m deep,
+/// dp 0.01, one gauge of every fluid kind) with its <gauges> replaced by `gauges` when given.
+std::string stillTank(const std::string& gauges = "") {
+    std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/gauges/StillTank_Def.xml");
+    if (gauges.empty()) return xml;
+    const std::size_t a = xml.find("<gauges>"), b = xml.find("</gauges>");
+    EXPECT_TRUE(a != std::string::npos && b != std::string::npos);
+    return xml.replace(a, b + 9 - a, gauges);
 }
-
-const char* kAllFluidGauges = R"(<gauges>
-  <default><computedt value="0.02" /><output value="true" /></default>
-  <pressure name="P"><computedt value="0" /><point x="#0.2" y="0" z="0.05" /></pressure>
-  <pressure name="Out"><point x="2" y="0" z="0.05" /></pressure>
-  <velocity name="V"><point x="0.2" y="0" z="0.1" /></velocity>
-  <swl name="S"><point0 x="0.2" y="0" z="0" /><point2 x="0.2" y="0" z="0.3" /><pointdp coefdp="0.5" /></swl>
-  <maxz name="Z"><point0 x="0.2" y="0" z="0" /><height value="0.3" /><distlimit coefdp="2" /></maxz>
-  <force name="Tank"><computedt value="0.1" /><target mkbound="0" /></force>
-  <_velocity name="Off"><point x="0.2" y="0" z="0.1" /></_velocity>
-</gauges>)";
 
 }  // namespace
 
@@ -78,7 +55,7 @@ const char* kAllFluidGauges = R"(<gauges>
 /// water's weight within 3% (the plate + wall check of the ledger measured 1.003).
 TEST(Gauges, StillWaterEveryKind) {
     const std::string dir = test::scratch("gauges_still");
-    const std::string kase = test::generateCase(dir, "tank", stillTank(kAllFluidGauges));
+    const std::string kase = test::generateCase(dir, "tank", stillTank());
     const auto r = test::runCpu(kase, dir + "/out", 2);
     const auto& c = r.kase;
     ASSERT_EQ(c.gauges.gauges.size(), 6u);  // "_velocity" is disabled
@@ -129,7 +106,7 @@ TEST(Gauges, StillWaterEveryKind) {
 /// The CSV files are the same bytes with 1 and 2 threads (the sums run in neighbour order).
 TEST(Gauges, ThreadParityOfTheFiles) {
     const std::string dir = test::scratch("gauges_parity");
-    const std::string kase = test::generateCase(dir, "tank", stillTank(kAllFluidGauges));
+    const std::string kase = test::generateCase(dir, "tank", stillTank());
     auto tweak = [](solver::RunOptions& o) { o.tmax = 0.06; };
     test::runCpu(kase, dir + "/t1", 1, tweak);
     test::runCpu(kase, dir + "/t2", 2, tweak);
