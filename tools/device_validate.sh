@@ -6,7 +6,8 @@
 #   validate    tools/validate.py, case by case, over VALIDATE_CASES (VALIDATE_ARGS, default
 #               "--resolution all"), GPU; the report is tarred into $OUT/validation.tgz
 #   stability   the hard cases of STABILITY ("name:xml:dp:tmax ..."), GPU, one table
-# Usage: tools/device_validate.sh parity validate stability
+# Usage: SEASPRING_COMMIT=<hash> tools/device_validate.sh parity validate stability
+# (the commit of the tree: the copy's .git on the device may be stale; the report names it)
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"

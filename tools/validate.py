@@ -97,6 +97,10 @@ def select_cases(a):
 
 
 def git_commit():
+    """SEASPRING_COMMIT when set (the GPU machines get a copy of the tree whose .git may be
+    stale), else `git describe` of the tree."""
+    if os.environ.get("SEASPRING_COMMIT"):
+        return os.environ["SEASPRING_COMMIT"]
     try:
         return subprocess.run(["git", "-C", ROOT, "describe", "--always", "--dirty"], capture_output=True,
                               text=True, timeout=20).stdout.strip() or "?"
