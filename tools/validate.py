@@ -23,6 +23,14 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+try:
+    import numpy, h5py, matplotlib  # noqa: F401,E401  (the tools' dependencies)
+except ImportError as _missing:  # e.g. a pyenv python3 first on PATH: use Debian's, which has them
+    if os.path.realpath(sys.executable) != os.path.realpath("/usr/bin/python3") and os.path.exists("/usr/bin/python3"):
+        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+    sys.exit(f"validate.py: {_missing}; install python3-numpy python3-h5py python3-matplotlib "
+             "(tools/setup-deps.sh)")
+
 from validation import ROOT, evaluate, paraview, plots, report, runner, spec  # noqa: E402
 from validation.spec import RESOLUTIONS  # noqa: E402
 
