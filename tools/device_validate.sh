@@ -2,7 +2,7 @@
 # Runs ON the GPU machine (device tool), from the repository root, with build-dev carried
 # (tools/device_build.sh makes it, and copies ../shared's reference data into
 # build-dev/shared). Steps, each optional:
-#   parity      gauge CSVs and state hashes of small gauge cases: cpu -threads:1, -threads:16, -gpu
+#   parity      gauge CSVs and state hashes of small gauge cases: cpu -threads:1, 2, 16, -gpu
 #   validate    tools/validate.py, case by case, over VALIDATE_CASES (VALIDATE_ARGS, default
 #               "--resolution all"), GPU; the report is tarred into $OUT/validation.tgz
 #   stability   the hard cases of STABILITY ("name:xml:dp:tmax ..."), GPU, one table
@@ -30,7 +30,7 @@ step_parity() {
   fi
   for spec in "${specs[@]}"; do
     local name=${spec%%:*} n=${spec##*:} ref="" same=yes hashes=""
-    for b in "-cpu -threads:1" "-cpu -threads:16" "-gpu"; do
+    for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
       local o="$work/o_${name}_${b//[^a-z0-9]/}"
       # shellcheck disable=SC2086
       "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$work/$name" "$o" >"$o.log" 2>&1 || echo "FAILED $name $b"
