@@ -200,7 +200,7 @@ public:
 
     void setGauges(const solver::GaugeQueries& q) override {
         gauge_q_ = q;
-        gauge_slot_ = gaugeSlots(q.ids, nbound_);
+        gauge_slot_ = solver::gaugeSlotsOfIds(q.ids, nbound_);
     }
     void gauges(solver::GaugeResults& out) override {
         cpuGauges(setup_.physics, a_, nbound_, gauge_q_, gauge_slot_, setup_.fluid, setup_.grid, out);

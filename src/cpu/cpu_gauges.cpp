@@ -41,17 +41,8 @@ void cpuGauges(const solver::PhysicsChoice& choice, const CpuArrays& a, std::uin
         else samplesFor<physics::CubicKernel, 2>(a, q, c, g, out);
     }
     if (q.ids.empty()) return;
-    for (std::uint32_t i = 0; i < nbound; ++i) {
-        const std::uint32_t k = slot_of_id[a.id[i]];
-        if (k != kNoGaugeSlot) out.positions[k] = a.pos[i];
-    }
-}
-
-std::vector<std::uint32_t> gaugeSlots(const std::vector<std::uint32_t>& ids, std::uint32_t nbound) {
-    std::vector<std::uint32_t> slot(nbound, kNoGaugeSlot);
-    for (std::size_t k = 0; k < ids.size(); ++k)
-        if (ids[k] < nbound) slot[ids[k]] = std::uint32_t(k);
-    return slot;
+    for (std::uint32_t i = 0; i < nbound; ++i)
+        physics::gaugePositionAt(i, a.id.data(), a.pos.data(), slot_of_id.data(), out.positions.data());
 }
 
 }  // namespace seaspring::cpu

@@ -13,7 +13,6 @@ namespace {
 
 constexpr int kThreads = 128;
 inline unsigned blocksFor(std::uint64_t n) { return unsigned((n + kThreads - 1) / kThreads); }
-constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
 
 template <class Kernel, int kDim>
 __global__ void samplesKernel(std::uint32_t n, const physics::Float4* pts, const std::uint32_t* cs,
@@ -33,9 +32,7 @@ __global__ void maxzKernel(std::uint32_t n, const physics::MaxzRow* rows, const 
 __global__ void positionsKernel(std::uint32_t nbound, const std::uint32_t* id, const physics::Double3* pos,
                                 const std::uint32_t* slot_of_id, physics::Double3* out) {
     const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i >= nbound) return;
-    const std::uint32_t k = slot_of_id[id[i]];
-    if (k != kNoSlot) out[k] = pos[i];
+    if (i < nbound) physics::gaugePositionAt(i, id, pos, slot_of_id, out);
 }
 
 template <class Kernel, int kDim>
@@ -62,12 +59,7 @@ void CudaGauges::set(const solver::GaugeQueries& q, std::uint32_t nbound) {
     maxz_.resize(q.maxz_rows.size());
     nids_ = q.ids.size();
     positions_.resize(nids_);
-    if (nids_ > 0) {
-        std::vector<std::uint32_t> slot(nbound, kNoSlot);
-        for (std::size_t k = 0; k < q.ids.size(); ++k)
-            if (q.ids[k] < nbound) slot[q.ids[k]] = std::uint32_t(k);
-        slot_of_id_.upload(slot);
-    }
+    if (nids_ > 0) slot_of_id_.upload(solver::gaugeSlotsOfIds(q.ids, nbound));
 }
 
 void CudaGauges::evaluate(const solver::PhysicsChoice& choice, const DeviceArrays& a, std::uint32_t nbound,

@@ -60,8 +60,8 @@ void readTiming(const XmlSource& src, pugi::xml_node node, const ExpressionEvalu
         const std::string n = c.name();
         if (n == "savevtkpart" || n == "output") {
             src.checkAttributes(c, {"value"});
-            (n == "output" ? t.output : t.savevtkpart) = src.boolean(c, "value", false);
             if (!c.attribute("value")) src.fail(c, "needs value=\"true\" or value=\"false\"");
+            (n == "output" ? t.output : t.savevtkpart) = src.boolean(c, "value", false);
         } else if (n == "computedt") {
             t.computedt = readInterval(src, c, ev);
         } else if (n == "outputdt") {

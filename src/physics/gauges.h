@@ -119,4 +119,14 @@ SEASPRING_HD inline double maxzRowAt(const MaxzRow& r, const std::uint32_t* cell
     return zmax;
 }
 
+/// Marks boundary ids that no gauge asks for (slot_of_id).
+constexpr std::uint32_t kNoGaugeSlot = 0xFFFFFFFFu;
+
+/// Boundary particle i (sorted order) gives its position to the gauge slot of its id, if any.
+SEASPRING_HD inline void gaugePositionAt(std::uint32_t i, const std::uint32_t* id, const Double3* pos,
+                                         const std::uint32_t* slot_of_id, Double3* out) {
+    const std::uint32_t k = slot_of_id[id[i]];
+    if (k != kNoGaugeSlot) out[k] = pos[i];
+}
+
 }  // namespace seaspring::physics

@@ -72,6 +72,15 @@ struct GaugeResults {
     std::vector<physics::Double3> positions;
 };
 
+/// For each boundary id [0, nbound), its index in `ids` (physics::kNoGaugeSlot when no gauge
+/// asks for it): the map both backends' gaugePositionAt reads.
+inline std::vector<std::uint32_t> gaugeSlotsOfIds(const std::vector<std::uint32_t>& ids, std::uint32_t nbound) {
+    std::vector<std::uint32_t> slot(nbound, physics::kNoGaugeSlot);
+    for (std::size_t k = 0; k < ids.size(); ++k)
+        if (ids[k] < nbound) slot[ids[k]] = std::uint32_t(k);
+    return slot;
+}
+
 class Backend {
 public:
     virtual ~Backend() = default;

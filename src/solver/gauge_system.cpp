@@ -53,10 +53,6 @@ const char* header(GaugeKind k) {
     return "";
 }
 
-int cellIndex(double v, double lo, double cs, int n) {
-    const double f = std::floor((v - lo) / cs);
-    return f < 0 ? 0 : (f >= n ? n - 1 : int(f));
-}
 }  // namespace
 
 struct GaugeSystem::Item {
@@ -74,7 +70,7 @@ struct GaugeSystem::Item {
 };
 
 GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log)
-    : case_(c), massfluid_(c.constants.massfluid), dim_(c.constants.dimensions), domain_minz_(c.domain_min.z) {
+    : massfluid_(c.constants.massfluid), dim_(c.constants.dimensions), domain_minz_(c.domain_min.z) {
     const gencase::GaugeSet& set = c.gauges;
     const double tout = c.params.time_out;
     const physics::CellGrid& g = s.grid;
@@ -135,12 +131,12 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
                 break;
             }
             case GaugeKind::MaxZ: {
-                const double cs = g.cellsize, r = sp.distlimit;
-                const int x0 = cellIndex(sp.point0.x - r, g.minx, cs, g.ncx), x1 = cellIndex(sp.point0.x + r, g.minx, cs, g.ncx);
-                const int y0 = dim_ == 3 ? cellIndex(sp.point0.y - r, g.miny, cs, g.ncy) : 0;
-                const int y1 = dim_ == 3 ? cellIndex(sp.point0.y + r, g.miny, cs, g.ncy) : 0;
-                const int z0 = cellIndex(sp.point0.z - r, g.minz, cs, g.ncz);
-                const int z1 = cellIndex(sp.point0.z + sp.height + r, g.minz, cs, g.ncz);
+                // The cells (clamped to the grid) of the box around the column, reach r.
+                const double r = sp.distlimit;
+                int x0, y0, z0, x1, y1, z1;
+                physics::cellOf(g, physics::Double3{sp.point0.x - r, sp.point0.y - r, sp.point0.z - r}, x0, y0, z0);
+                physics::cellOf(g, physics::Double3{sp.point0.x + r, sp.point0.y + r, sp.point0.z + sp.height + r}, x1, y1, z1);
+                if (dim_ == 2) y0 = y1 = 0;
                 item.first = std::uint32_t(q_.maxz_rows.size());
                 for (int z = z0; z <= z1; ++z)
                     for (int y = y0; y <= y1; ++y)

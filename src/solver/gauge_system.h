@@ -45,7 +45,6 @@ public:
     struct Item;
 
 private:
-    const SolverCase& case_;
     double massfluid_ = 0;
     int dim_ = 3;
     double domain_minz_ = 0;
