@@ -3,6 +3,8 @@
 # (tools/device_build.sh makes it). Checks CPU/GPU bit-identity on small cases of every
 # physics family, then runs the fluid benchmark. Writes logs and a table under $OUT.
 # Usage: tools/device_check.sh [bench DPs...]
+# Env: BASE_BIN=folder with a baseline seaspring + gencase: the benchmark then runs the
+#      baseline and this build alternately (BENCH_REPEAT rounds, default 2) and prints both.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
@@ -34,10 +36,21 @@ parity db3d_sym_wend_art_ddt3 "$work/db3d" 40 -symplectic -wendland -viscoart:0.
 parity db3d_verlet_cubic_lam_ddt1 "$work/db3d" 40 -verlet -cubic -viscolam:1e-6 -ddt:1
 parity db3d_sym_wend_sps_ddt2 "$work/db3d" 40 -symplectic -wendland -viscolamsps:1e-6 -ddt:2
 parity db3d_cells2h "$work/db3d" 40 -cellmode:full
+parity db3d_cells_third "$work/db3d" 40 -cellmode:third
 parity val2d_sym_wend_art_ddt3 "$work/val2d" 300 -symplectic -ddt:3
 parity val2d_verlet_cubic_sps_ddt0 "$work/val2d" 300 -verlet -cubic -viscolamsps:1e-6 -ddt:0
 cp "$work"/*.log "$out/" 2>/dev/null
 echo "== parity =="; cat "$table"
-SEASPRING_BIN="$bin" BENCH_DIR="$work/bench" BENCH_CASE="$shared/Spheric2Dam_01M.xml" \
-  "$root/tools/bench_fluid.sh" -gpu "$@" 2>&1 | tee "$out/bench.txt"
-cp "$work/bench/bench_fluid.csv" "$out/" 2>/dev/null
+bench() {  # label bin-folder args...
+  local label=$1 b=$2; shift 2
+  SEASPRING_BIN="$b" BENCH_DIR="$work/bench" BENCH_CASE="$shared/Spheric2Dam_01M.xml" \
+    "$root/tools/bench_fluid.sh" -gpu "$@" >"$work/bench_run.txt" 2>&1 || cat "$work/bench_run.txt"
+  tail -n +2 "$work/bench/bench_fluid.csv" | sed "s/^/$label,/" >>"$out/bench_all.csv"
+}
+echo "build,dp,particles,steps,loop_s,steps_per_s,ns_per_particle_step,device,backend,threads,state_hash" >"$out/bench_all.csv"
+for ((round = 0; round < ${BENCH_REPEAT:-2}; ++round)); do
+  [[ -n "${BASE_BIN:-}" ]] && bench base "$BASE_BIN" "$@"
+  bench new "$bin" "$@"
+done
+echo "== bench (ns per particle per step) =="
+column -s, -t "$out/bench_all.csv" | cut -c1-150

@@ -119,17 +119,21 @@ public:
         moving_pos0_ = s.moving_pos0;
         moving_object_ = s.moving_object;
         if (!s.solid.empty()) solid_.init(s.solid, s.step);
-        sortRange(0, nbound_, a_.cell_start_bound);
+        sortRange(0, nbound_, a_.cell_start_bound, true);
+        boundNear();
         solid_.updateSlots(a_.id.data(), nbound_);
         bound_sorted_ = true;
     }
 
-    void divide() override {
+    void divide(bool keep_step_start) override {
+        const bool pre = !setup_.symplectic || keep_step_start;
         if (setup_.nmoving > 0 || !solid_.empty() || !bound_sorted_) {
-            sortRange(0, nbound_, a_.cell_start_bound);
+            sortRange(0, nbound_, a_.cell_start_bound, pre);
+            boundNear();
             solid_.updateSlots(a_.id.data(), nbound_);
         }
-        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, a_.cell_start_fluid) - nbound_;
+        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, a_.cell_start_fluid, pre) - nbound_;
+        blockNear(a_.cell_start_fluid, a_.fluid_near);
         physics::ParticleView v = a_.view();
         const std::int64_t n = std::int64_t(nbound_) + nfluid_;
 #pragma omp parallel for schedule(static)
@@ -231,9 +235,34 @@ private:
             cpuHydroForces_cubic(setup_.physics, a_, slot, n, out, setup_.fluid, setup_.grid);
     }
 
+    /// The "near" flags of the block with cell ranges `cs` (physics::cellOccupiedAt and
+    /// dilateCellsAt).
+    void blockNear(const std::vector<std::uint32_t>& cs, std::vector<std::uint8_t>& near) {
+        const std::int64_t nc = std::int64_t(setup_.grid.cellCount());
+        near.resize(std::size_t(nc));
+        near_tmp_.resize(std::size_t(nc));
+        std::uint8_t* a = near.data();
+        std::uint8_t* t = near_tmp_.data();
+        const physics::CellGrid& g = setup_.grid;
+#pragma omp parallel
+        {
+#pragma omp for schedule(static)
+            for (std::int64_t c = 0; c < nc; ++c) physics::cellOccupiedAt(std::uint32_t(c), cs.data(), a);
+#pragma omp for schedule(static)
+            for (std::int64_t c = 0; c < nc; ++c) physics::dilateCellsAt(std::uint32_t(c), 0, g, a, t);
+#pragma omp for schedule(static)
+            for (std::int64_t c = 0; c < nc; ++c) physics::dilateCellsAt(std::uint32_t(c), 1, g, t, a);
+#pragma omp for schedule(static)
+            for (std::int64_t c = 0; c < nc; ++c) physics::dilateCellsAt(std::uint32_t(c), 2, g, a, t);
+        }
+        near.swap(near_tmp_);
+    }
+    void boundNear() { blockNear(a_.cell_start_bound, a_.bound_near); }
+
     /// Sorts [b, e) by (cell, id), excluded last; rebuilds `cell_start` for the active part.
-    /// Returns the end of the active part.
-    std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, std::vector<std::uint32_t>& cell_start) {
+    /// `pre`: reorder the step-start state too (Backend::divide). Returns the end of the
+    /// active part.
+    std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, std::vector<std::uint32_t>& cell_start, bool pre) {
         physics::ParticleView v = a_.view();
 #pragma omp parallel for schedule(static)
         for (std::int64_t i = b; i < std::int64_t(e); ++i) {
@@ -247,12 +276,8 @@ private:
         gatherRange(a_.pos, scratch_d3_, a_.perm, b, e);
         gatherRange(a_.velrho, scratch_f4_, a_.perm, b, e);
         gatherRange(a_.excl, scratch_u8_, a_.perm, b, e);
-        if (setup_.symplectic) {
-            gatherRange(a_.pos_pre, scratch_d3_, a_.perm, b, e);
-            gatherRange(a_.velrho_pre, scratch_f4_, a_.perm, b, e);
-        } else {
-            gatherRange(a_.velrho_pre, scratch_f4_, a_.perm, b, e);
-        }
+        if (setup_.symplectic && pre) gatherRange(a_.pos_pre, scratch_d3_, a_.perm, b, e);
+        if (pre) gatherRange(a_.velrho_pre, scratch_f4_, a_.perm, b, e);
         gatherRange(a_.tau, scratch_t_, a_.perm, b, e);
         // Active part: keys below the excluded marker.
         const std::uint64_t excluded_from = physics::kExcludedCell << 32;
@@ -282,7 +307,7 @@ private:
     std::vector<std::uint32_t> scratch_u32_;
     std::vector<physics::Double3> scratch_d3_;
     std::vector<physics::Float4> scratch_f4_;
-    std::vector<std::uint8_t> scratch_u8_;
+    std::vector<std::uint8_t> scratch_u8_, near_tmp_;
     std::vector<physics::SymTensor> scratch_t_;
     solver::GaugeQueries gauge_q_;
     std::vector<std::uint32_t> gauge_slot_;

@@ -74,6 +74,15 @@ __global__ void activeEndKernel(std::uint32_t b, std::uint32_t e, const std::uin
     }
     *out = lo;
 }
+__global__ void cellOccupiedKernel(std::uint32_t nc, const std::uint32_t* cs, std::uint8_t* occ) {
+    const std::uint32_t c = blockIdx.x * blockDim.x + threadIdx.x;
+    if (c < nc) physics::cellOccupiedAt(c, cs, occ);
+}
+__global__ void dilateCellsKernel(std::uint32_t nc, int axis, physics::CellGrid g, const std::uint8_t* in,
+                                  std::uint8_t* out) {
+    const std::uint32_t c = blockIdx.x * blockDim.x + threadIdx.x;
+    if (c < nc) physics::dilateCellsAt(c, axis, g, in, out);
+}
 __global__ void posCellKernel(std::uint32_t n, physics::ParticleView v, physics::CellGrid g) {
     const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < n) physics::posCellAt(i, v, g);
@@ -205,6 +214,9 @@ public:
         const std::size_t nc = std::size_t(s.grid.cellCount()) + 1;
         cs_bound_.resize(nc);
         cs_fluid_.resize(nc);
+        bound_near_.resize(nc - 1);
+        fluid_near_.resize(nc - 1);
+        near_tmp_.resize(nc - 1);
         moving_pos0_.upload(s.moving_pos0);
         moving_object_.upload(s.moving_object);
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
@@ -217,17 +229,21 @@ public:
                                         perm_alt_.data(), int(np));
         sort_temp_.resize(temp > 0 ? temp : 1);
         if (!s.solid.empty()) solid_.init(s.solid, s.step);
-        sortRange(0, nbound_, cs_bound_.data());
+        sortRange(0, nbound_, cs_bound_.data(), true);
+        boundNear();
         solid_.updateSlots(id_.data(), nbound_);
     }
 
-    void divide() override {
+    void divide(bool keep_step_start) override {
+        const bool pre = !setup_.symplectic || keep_step_start;
         // Solid particles move inside the boundary block: re-sort it, and find them again.
         if (setup_.nmoving > 0 || !solid_.empty()) {
-            sortRange(0, nbound_, cs_bound_.data());
+            sortRange(0, nbound_, cs_bound_.data(), pre);
+            boundNear();
             solid_.updateSlots(id_.data(), nbound_);
         }
-        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_.data()) - nbound_;
+        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_.data(), pre) - nbound_;
+        blockNear(cs_fluid_.data(), fluid_near_.data());
         const std::uint32_t n = nbound_ + nfluid_;
         if (n > 0) {
             posCellKernel<<<blocksFor(n), kThreads>>>(n, view(), setup_.grid);
@@ -344,6 +360,8 @@ private:
         a.v = view();
         a.cell_start_bound = cs_bound_.data();
         a.cell_start_fluid = cs_fluid_.data();
+        a.bound_near = bound_near_.data();
+        a.fluid_near = fluid_near_.data();
         a.block_maxima = block_maxima_.data();
         a.maxima = maxima_.data();
         a.reduce_blocks = reduce_blocks_;
@@ -378,7 +396,26 @@ private:
                                              cudaMemcpyDeviceToDevice));
     }
 
-    std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, std::uint32_t* cs) {
+    /// The "near" flags of the block with cell ranges `cs` (physics::cellOccupiedAt and
+    /// dilateCellsAt).
+    void blockNear(const std::uint32_t* cs, std::uint8_t* near) {
+        const std::uint32_t nc = setup_.grid.cellCount();
+        std::uint8_t* t = near_tmp_.data();
+        cellOccupiedKernel<<<blocksFor(nc), kThreads>>>(nc, cs, near);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        dilateCellsKernel<<<blocksFor(nc), kThreads>>>(nc, 0, setup_.grid, near, t);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        dilateCellsKernel<<<blocksFor(nc), kThreads>>>(nc, 1, setup_.grid, t, near);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        dilateCellsKernel<<<blocksFor(nc), kThreads>>>(nc, 2, setup_.grid, near, t);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(near, t, nc, cudaMemcpyDeviceToDevice));
+    }
+    void boundNear() { blockNear(cs_bound_.data(), bound_near_.data()); }
+
+    /// Sorts [b, e) by (cell, id), excluded last; rebuilds `cs` for the active part. `pre`:
+    /// reorder the step-start state too (Backend::divide). Returns the end of the active part.
+    std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, std::uint32_t* cs, bool pre) {
         const std::uint32_t nc = setup_.grid.cellCount() + 1;
         if (e > b) {
             sortKeysKernel<<<blocksFor(e - b), kThreads>>>(b, e, view(), setup_.grid);
@@ -394,8 +431,8 @@ private:
             gather(pos_, scratch_d3_, b, e);
             gather(velrho_, scratch_f4_, b, e);
             gather(excl_, scratch_u8_, b, e);
-            if (setup_.symplectic) gather(pos_pre_, scratch_d3_, b, e);
-            gather(velrho_pre_, scratch_f4_, b, e);
+            if (setup_.symplectic && pre) gather(pos_pre_, scratch_d3_, b, e);
+            if (pre) gather(velrho_pre_, scratch_f4_, b, e);
             gather(tau_, scratch_t_, b, e);
             activeEndKernel<<<1, 1>>>(b, e, keys_.data(), active_end_.data());
             SEASPRING_CUDA_LAUNCH_CHECK();
@@ -422,7 +459,7 @@ private:
     DeviceBuffer<std::uint32_t> id_, perm_, perm_alt_, scratch_u32_, cs_bound_, cs_fluid_, active_end_;
     DeviceBuffer<physics::Double3> pos_, pos_pre_, scratch_d3_, moving_pos0_;
     DeviceBuffer<physics::Float4> velrho_, velrho_pre_, poscell_, acear_, scratch_f4_;
-    DeviceBuffer<std::uint8_t> excl_, scratch_u8_, sort_temp_;
+    DeviceBuffer<std::uint8_t> excl_, scratch_u8_, sort_temp_, bound_near_, fluid_near_, near_tmp_;
     DeviceBuffer<float> visc_;
     DeviceBuffer<physics::Float2> press_ovrho_;
     DeviceBuffer<physics::SymTensor> tau_, gradvel_, scratch_t_;

@@ -60,6 +60,8 @@ inline physics::InteractionInputs interactionInputs(const DeviceArrays& a, bool 
     in.cell_start_fluid = a.cell_start_fluid;
     in.tau = sps ? a.v.tau : nullptr;
     in.press_ovrho = a.v.press_ovrho;
+    in.bound_near = a.bound_near;
+    in.fluid_near = a.fluid_near;
     return in;
 }
 

@@ -73,6 +73,11 @@ SEASPRING_HD inline int packedCellZ(const CellGrid& g, float w) {
     return int(floatBitsToUint(w) >> (g.bitsx + g.bitsy));
 }
 
+/// The linear cell index of a packed cell.
+SEASPRING_HD inline std::uint32_t linearCellOf(const CellGrid& g, float w) {
+    return g.linear(packedCellX(g, w), packedCellY(g, w), packedCellZ(g, w));
+}
+
 /// Distance along one axis from a point at offset `o` in its cell ([0, cellsize]) to the
 /// nearest face of the cell `k` cells away (0 for k = 0), less `margin`, floored at 0.
 SEASPRING_HD inline float cellGap(int k, float o, float cs, float margin) {

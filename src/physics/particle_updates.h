@@ -62,6 +62,27 @@ SEASPRING_HD inline void cellStartOuterAt(std::uint32_t c, std::uint32_t b, std:
     else if (c > std::uint32_t(keys[e - 1] >> 32)) cell_start[c] = e;
 }
 
+/// "Near" flags of a block (boundary or fluid), per cell: near[c] = 1 when the block has a
+/// particle in a cell within g.range cells of c along every axis (the search box of any point
+/// of c), else 0. A particle skips a block where its cell's flag is 0: the block holds no
+/// candidate there, so the flags change no result. Built from the cell ranges in three
+/// passes (cellOccupiedAt, then dilateCellsAt along x, y and z). Integer only.
+SEASPRING_HD inline void cellOccupiedAt(std::uint32_t c, const std::uint32_t* cell_start, std::uint8_t* occ) {
+    occ[c] = cell_start[c] != cell_start[c + 1] ? 1 : 0;
+}
+/// out[c] = OR of in[] over the cells within g.range of c along `axis` (0 x, 1 y, 2 z).
+SEASPRING_HD inline void dilateCellsAt(std::uint32_t c, int axis, const CellGrid& g, const std::uint8_t* in,
+                                       std::uint8_t* out) {
+    const std::uint32_t nx = std::uint32_t(g.ncx), nxy = nx * std::uint32_t(g.ncy);
+    const std::uint32_t stride = axis == 0 ? 1u : (axis == 1 ? nx : nxy);
+    const int n = axis == 0 ? g.ncx : (axis == 1 ? g.ncy : g.ncz);
+    const int k = int(axis == 0 ? c % nx : (axis == 1 ? (c / nx) % std::uint32_t(g.ncy) : c / nxy));
+    const std::uint32_t base = c - std::uint32_t(k) * stride;
+    std::uint8_t any = 0;
+    for (int m = maxi(k - g.range, 0); m <= mini(k + g.range, n - 1); ++m) any |= in[base + std::uint32_t(m) * stride];
+    out[c] = any;
+}
+
 /// PosCell of particle i.
 SEASPRING_HD inline void posCellAt(std::uint32_t i, const ParticleView& v, const CellGrid& g) {
     std::uint32_t cell;

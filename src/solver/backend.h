@@ -91,7 +91,10 @@ public:
     virtual void init(const BackendSetup& setup) = 0;
     /// Sorts the active particles by cell (moving boundaries too when there are any), drops
     /// the ones flagged excluded to the tail, rebuilds cell ranges and PosCell.
-    virtual void divide() = 0;
+    /// `keep_step_start`: the symplectic step-start state (pos_pre, velrho_pre) is still to be
+    /// read (between predictor and corrector); otherwise it is not reordered, as the next
+    /// predictor overwrites it. (Verlet's state at n-1 is always kept.)
+    virtual void divide(bool keep_step_start) = 0;
     /// Places moving boundaries (pose now, velocity over the coming interval).
     virtual void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) = 0;
     /// One force evaluation; returns the dt maxima.

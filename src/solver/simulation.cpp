@@ -319,7 +319,7 @@ RunSummary Simulation::run() {
 
     backend_->init(setup_);
     placeMoving(0.0, p.dt_ini > 0 ? p.dt_ini : h / cs0);
-    backend_->divide();
+    backend_->divide(false);
     if (gauges_) {
         gauges_->attach(*backend_);
         gauges_->evaluate(0.0, *backend_);
@@ -347,7 +347,9 @@ RunSummary Simulation::run() {
     auto predictor = [&](double dt) { phase(t_integrate, [&] { backend_->symplecticPredictor(dt); return 0; }); };
     auto corrector = [&](double dt) { phase(t_integrate, [&] { backend_->symplecticCorrector(dt); return 0; }); };
     auto verlet = [&](double dt, bool e) { phase(t_integrate, [&] { backend_->verletStep(dt, e); return 0; }); };
-    auto divide = [&] { phase(t_divide, [&] { backend_->divide(); return 0; }); };
+    auto divide = [&](bool keep_step_start) {
+        phase(t_divide, [&] { backend_->divide(keep_step_start); return 0; });
+    };
     double t = 0, dt_next = p.dt_ini > 0 ? p.dt_ini : h / cs0, dt_prev = dt_next;
     double next_out = tout;
     long long step = 0;
@@ -390,7 +392,7 @@ RunSummary Simulation::run() {
                     });
                 }
                 predictor(dt);
-                divide();
+                divide(true);
                 const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
                 if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
                 if (midpoint) phase(t_solid, [&] { backend_->solidRestore(); return 0; });
@@ -413,7 +415,7 @@ RunSummary Simulation::run() {
                 placeMoving(t, symplectic ? (p.dt_fixed > 0 ? p.dt_fixed : dt_next) : dt_prev);
                 return 0;
             });
-            divide();
+            divide(false);
         }
         sum_.dt_last = dt;
         if (gauges_) gauges_->evaluate(t, *backend_);
