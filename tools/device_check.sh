@@ -36,6 +36,7 @@ parity db3d_sym_wend_art_ddt3 "$work/db3d" 40 -symplectic -wendland -viscoart:0.
 parity db3d_verlet_cubic_lam_ddt1 "$work/db3d" 40 -verlet -cubic -viscolam:1e-6 -ddt:1
 parity db3d_sym_wend_sps_ddt2 "$work/db3d" 40 -symplectic -wendland -viscolamsps:1e-6 -ddt:2
 parity db3d_cells2h "$work/db3d" 40 -cellmode:full
+parity db3d_cells_h "$work/db3d" 40 -cellmode:h
 parity db3d_cells_third "$work/db3d" 40 -cellmode:third
 parity val2d_sym_wend_art_ddt3 "$work/val2d" 300 -symplectic -ddt:3
 parity val2d_verlet_cubic_sps_ddt0 "$work/val2d" 300 -verlet -cubic -viscolamsps:1e-6 -ddt:0

@@ -133,7 +133,6 @@ public:
             solid_.updateSlots(a_.id.data(), nbound_);
         }
         nfluid_ = sortRange(nbound_, nbound_ + nfluid_, a_.cell_start_fluid, pre) - nbound_;
-        blockNear(a_.cell_start_fluid, a_.fluid_near);
         physics::ParticleView v = a_.view();
         const std::int64_t n = std::int64_t(nbound_) + nfluid_;
 #pragma omp parallel for schedule(static)

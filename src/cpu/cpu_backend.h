@@ -23,8 +23,8 @@ struct CpuArrays {
     std::vector<std::uint64_t> keys;
     std::vector<std::uint32_t> perm;
     std::vector<std::uint32_t> cell_start_bound, cell_start_fluid;
-    /// Per cell: a boundary / fluid particle in its search box (physics::dilateCellsAt).
-    std::vector<std::uint8_t> bound_near, fluid_near;
+    /// Per cell: a boundary particle in its search box (physics::dilateCellsAt).
+    std::vector<std::uint8_t> bound_near;
 
     physics::ParticleView view();
 };

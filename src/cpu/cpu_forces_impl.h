@@ -23,7 +23,6 @@ inline physics::InteractionInputs interactionInputs(CpuArrays& a, bool sps) {
     in.tau = sps ? a.tau.data() : nullptr;
     in.press_ovrho = a.press_ovrho.data();
     in.bound_near = a.bound_near.empty() ? nullptr : a.bound_near.data();
-    in.fluid_near = a.fluid_near.empty() ? nullptr : a.fluid_near.data();
     return in;
 }
 

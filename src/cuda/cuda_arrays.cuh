@@ -15,8 +15,7 @@ struct DeviceArrays {
     physics::ParticleView v;                  ///< per-particle arrays
     std::uint32_t* cell_start_bound = nullptr;
     std::uint32_t* cell_start_fluid = nullptr;
-    std::uint8_t* bound_near = nullptr;        ///< per cell: "near" flags (physics::dilateCellsAt)
-    std::uint8_t* fluid_near = nullptr;
+    std::uint8_t* bound_near = nullptr;        ///< per cell: boundary "near" flags (physics::dilateCellsAt)
     physics::DtMaxima* block_maxima = nullptr; ///< one per block of the reduction
     physics::DtMaxima* maxima = nullptr;       ///< the final maxima (device)
     std::uint32_t reduce_blocks = 0;

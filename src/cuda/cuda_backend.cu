@@ -215,7 +215,6 @@ public:
         cs_bound_.resize(nc);
         cs_fluid_.resize(nc);
         bound_near_.resize(nc - 1);
-        fluid_near_.resize(nc - 1);
         near_tmp_.resize(nc - 1);
         moving_pos0_.upload(s.moving_pos0);
         moving_object_.upload(s.moving_object);
@@ -243,7 +242,6 @@ public:
             solid_.updateSlots(id_.data(), nbound_);
         }
         nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_.data(), pre) - nbound_;
-        blockNear(cs_fluid_.data(), fluid_near_.data());
         const std::uint32_t n = nbound_ + nfluid_;
         if (n > 0) {
             posCellKernel<<<blocksFor(n), kThreads>>>(n, view(), setup_.grid);
@@ -361,7 +359,6 @@ private:
         a.cell_start_bound = cs_bound_.data();
         a.cell_start_fluid = cs_fluid_.data();
         a.bound_near = bound_near_.data();
-        a.fluid_near = fluid_near_.data();
         a.block_maxima = block_maxima_.data();
         a.maxima = maxima_.data();
         a.reduce_blocks = reduce_blocks_;
@@ -459,7 +456,7 @@ private:
     DeviceBuffer<std::uint32_t> id_, perm_, perm_alt_, scratch_u32_, cs_bound_, cs_fluid_, active_end_;
     DeviceBuffer<physics::Double3> pos_, pos_pre_, scratch_d3_, moving_pos0_;
     DeviceBuffer<physics::Float4> velrho_, velrho_pre_, poscell_, acear_, scratch_f4_;
-    DeviceBuffer<std::uint8_t> excl_, scratch_u8_, sort_temp_, bound_near_, fluid_near_, near_tmp_;
+    DeviceBuffer<std::uint8_t> excl_, scratch_u8_, sort_temp_, bound_near_, near_tmp_;
     DeviceBuffer<float> visc_;
     DeviceBuffer<physics::Float2> press_ovrho_;
     DeviceBuffer<physics::SymTensor> tau_, gradvel_, scratch_t_;

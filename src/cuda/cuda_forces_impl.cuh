@@ -61,7 +61,6 @@ inline physics::InteractionInputs interactionInputs(const DeviceArrays& a, bool 
     in.tau = sps ? a.v.tau : nullptr;
     in.press_ovrho = a.v.press_ovrho;
     in.bound_near = a.bound_near;
-    in.fluid_near = a.fluid_near;
     return in;
 }
 

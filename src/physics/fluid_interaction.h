@@ -161,9 +161,6 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                                              const FluidConstants& c, const CellGrid& g,
                                              float& ar_out, float& visc_out) {
     const Float4 psa = in.poscell[i];
-    ar_out = 0.f;
-    visc_out = 0.f;
-    if (in.fluid_near != nullptr && in.fluid_near[linearCellOf(g, psa.w)] == 0) return;  // a dry wall
     const Float4 va = in.velrho[i];
     float ar = 0.f, visc = 0.f;
     const SearchBox box = searchBox<Opt::dim>(psa, g);

@@ -62,11 +62,13 @@ SEASPRING_HD inline void cellStartOuterAt(std::uint32_t c, std::uint32_t b, std:
     else if (c > std::uint32_t(keys[e - 1] >> 32)) cell_start[c] = e;
 }
 
-/// "Near" flags of a block (boundary or fluid), per cell: near[c] = 1 when the block has a
-/// particle in a cell within g.range cells of c along every axis (the search box of any point
-/// of c), else 0. A particle skips a block where its cell's flag is 0: the block holds no
-/// candidate there, so the flags change no result. Built from the cell ranges in three
-/// passes (cellOccupiedAt, then dilateCellsAt along x, y and z). Integer only.
+/// "Near" flags of the boundary block, per cell: near[c] = 1 when the block has a particle in a
+/// cell within g.range cells of c along every axis (the search box of any point of c), else 0.
+/// A fluid particle skips the boundary block where its cell's flag is 0: the block holds no
+/// candidate there, so the flags change no result. Built from the cell ranges in three passes
+/// (cellOccupiedAt, then dilateCellsAt along x, y and z), when the boundary block is sorted
+/// (once, unless boundaries move). Integer only. (The same flags of the fluid block, rebuilt
+/// at every divide, would let dry walls skip their loop, but cost more than they save.)
 SEASPRING_HD inline void cellOccupiedAt(std::uint32_t c, const std::uint32_t* cell_start, std::uint8_t* occ) {
     occ[c] = cell_start[c] != cell_start[c + 1] ? 1 : 0;
 }

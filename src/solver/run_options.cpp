@@ -204,9 +204,13 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
         } else if (name == "nsteps") {
             o.nsteps = toInteger(g, 0, LLONG_MAX);
         } else if (name == "cellmode") {
-            if (g.value != "full" && g.value != "h" && g.value != "third")
-                usageError(g.arg + ": \"" + g.value + "\" is not a cell mode (supported: full, h, third)");
-            o.cell_div = g.value == "full" ? 1 : (g.value == "h" ? 2 : 3);
+            static const char* const kModes[] = {"auto", "full", "h", "third", "quarter"};  // index = cell_div
+            o.cell_div = -1;
+            for (int k = 0; k < 5; ++k)
+                if (g.value == kModes[k]) o.cell_div = k;
+            if (o.cell_div < 0)
+                usageError(g.arg + ": \"" + g.value +
+                           "\" is not a cell mode (supported: auto, full, h, third, quarter)");
         } else if (name == "vcpmsubsteps") {
             o.solid_substeps = int(toInteger(g, 0, 1000000));
         } else if (name == "vcpmcoupling") {
@@ -299,8 +303,12 @@ Run control:
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
                        files in OUTDIR/vtk), none
   -svres[:0|1]         accepted for DualSPHysics command lines; run.json is always written
-  -cellmode:full|h|third  neighbour cells of size 2h (full), h (h, the default) or
-                       2h/3 (third, SeaSpring's: fewer candidates, more rows)
+  -cellmode:auto|full|h|third|quarter
+                       neighbour cells of size 2h (full), h (h), 2h/3 (third) or h/2
+                       (quarter); finer cells mean fewer candidates per neighbour and
+                       more rows of cells to visit. auto (default): quarter in 3D and
+                       h in 2D, or the next coarser mode if the grid would exceed 16
+                       cells per particle + 2^20 or a 32-bit packed cell
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of
                        int(dt_F/dt_S)+1 (convergence studies; 0: automatic). The solid
                        is unstable when dt_F/N exceeds its stability limit

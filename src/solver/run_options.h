@@ -29,7 +29,8 @@ struct RunOptions {
     std::optional<double> tmax, tout, visco, visco_bound_factor, ddt_value, cfl, dt_fixed;
     std::optional<int> step_algorithm, verlet_steps, kernel, visco_treatment, ddt;
     std::optional<long long> nsteps;  ///< stop after this many steps
-    int cell_div = 2;  ///< cells of 2h/cell_div: 1 -cellmode:full, 2 -cellmode:h, 3 -cellmode:third
+    /// Cells of 2h/cell_div: 1 -cellmode:full, 2 h, 3 third, 4 quarter; 0 auto (resolveCellDiv).
+    int cell_div = 0;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
     double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none

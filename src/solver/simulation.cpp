@@ -50,12 +50,27 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div) {
     static const char* ddt[] = {"no DDT", "DDT Molteni", "DDT Fourtakas", "DDT Fourtakas full"};
     s << ", " << ddt[p.density_dt];
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
-    s << ", DBC, CFL " << p.cfl_number << ", cells of " << (cell_div == 1 ? "2h" : (cell_div == 2 ? "h" : "2h/3"));
+    static const char* const kCells[] = {"?", "2h", "h", "2h/3", "h/2"};
+    s << ", DBC, CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
     return s.str();
+}
+
+int resolveCellDiv(const SolverCase& c, int cell_div) {
+    if (cell_div > 0) return cell_div;
+    const double np = double(c.particles.size());
+    for (int d = c.constants.dimensions == 3 ? 4 : 2; d > 1; --d) {
+        physics::CellGrid g;
+        if (physics::makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
+                                  c.domain_max.z, c.constants.h, d, g) &&
+            double(g.cellCount()) <= 16.0 * np + 1048576.0)
+            return d;
+    }
+    return 1;
 }
 
 BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
     using namespace physics;
+    cell_div = resolveCellDiv(c, cell_div);
     const ParticleSet& ps = c.particles;
     const std::size_t np = ps.size();
     for (std::size_t i = 0; i < np; ++i)
@@ -175,7 +190,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nmoving = c.nmoving;
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
-    sum_.options = describePhysics(c.params, c.constants.dimensions, o.cell_div);
+    sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.range);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (!setup_.solid.empty()) {

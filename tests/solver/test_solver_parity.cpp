@@ -107,6 +107,31 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes3D) {
     for (std::size_t i = 0; i < r1.state.pos.size(); ++i)
         maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
     EXPECT_LT(maxdiff, 1e-5);
+    EXPECT_NE(r1.summary.options.find("cells of h/2"), std::string::npos) << r1.summary.options;
+}
+
+// -cellmode:auto: cells of h/2 in 3D and h in 2D, coarser when the grid would be too large
+// for the particles; explicit modes pass through.
+TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
+    const std::string dir = scratch("autocells");
+    const auto r3d = test::runCpu(test::generateCaseFile(dir, "db", std::string(SEASPRING_SOURCE_DIR) +
+                                                                        "/cases/dambreak3d/DamBreak3D_Def.xml", 0.04),
+                                  dir + "/o3", 1, [](solver::RunOptions& o) { o.nsteps = 1; });
+    const auto r2d = test::runCpu(test::generateCase(dir, "tank", tank2d(kVariants[0].params)), dir + "/o2", 1,
+                                  [](solver::RunOptions& o) { o.nsteps = 1; });
+    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 0), 4);
+    EXPECT_EQ(solver::resolveCellDiv(r2d.kase, 0), 2);
+    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 2), 2);
+    EXPECT_EQ(solver::resolveCellDiv(r2d.kase, 3), 3);
+    // The same particles in a domain 60 times longer: h/2 cells exceed 16 per particle + 2^20.
+    solver::SolverCase wide = r3d.kase;
+    wide.domain_max.x = wide.domain_min.x + 60.0 * (wide.domain_max.x - wide.domain_min.x);
+    const int d = solver::resolveCellDiv(wide, 0);
+    EXPECT_LT(d, 4);
+    physics::CellGrid g;
+    ASSERT_TRUE(physics::makeCellGrid(wide.domain_min.x, wide.domain_min.y, wide.domain_min.z, wide.domain_max.x,
+                                      wide.domain_max.y, wide.domain_max.z, wide.constants.h, d, g));
+    EXPECT_LE(double(g.cellCount()), 16.0 * double(wide.particles.size()) + 1048576.0);
 }
 
 // DtAllParticles = 1: a piston moving at 5 m/s (10 |v| = 50 m/s above c0 = 28 m/s) limits the

@@ -65,7 +65,7 @@ TEST(RunOptions, Defaults) {
                  o.dt_fixed);
     EXPECT_FALSE(o.step_algorithm || o.verlet_steps || o.kernel || o.visco_treatment || o.ddt);
     EXPECT_FALSE(o.nsteps);
-    EXPECT_EQ(o.cell_div, 2);
+    EXPECT_EQ(o.cell_div, 0);  // auto
     EXPECT_EQ(o.progress_interval, 1.0);
     EXPECT_FALSE(o.quiet);
     EXPECT_FALSE(o.help);
@@ -93,6 +93,8 @@ TEST(RunOptions, RunControl) {
     EXPECT_EQ(parseWith({"-cellmode:full"}).cell_div, 1);
     EXPECT_EQ(parseWith({"-cellmode:h"}).cell_div, 2);
     EXPECT_EQ(parseWith({"-cellmode:third"}).cell_div, 3);
+    EXPECT_EQ(parseWith({"-cellmode:quarter"}).cell_div, 4);
+    EXPECT_EQ(parseWith({"-cellmode:auto"}).cell_div, 0);
     EXPECT_EQ(parseWith({"-progress:0"}).progress_interval, 0.0);
     EXPECT_EQ(parseWith({"-progress:2.5"}).progress_interval, 2.5);
     EXPECT_TRUE(parseWith({"-quiet"}).quiet);
@@ -265,7 +267,7 @@ TEST(RunOptions, ValuesMustLieInRange) {
     expectError({"-progress:-1"}, "-progress:-1: -1 must be >= 0");
     expectError({"-svres:2"}, "-svres:2: 2 must be 0..1");
     expectError({"-cellmode:half"},
-                "-cellmode:half: \"half\" is not a cell mode (supported: full, h, third)");
+                "-cellmode:half: \"half\" is not a cell mode (supported: auto, full, h, third, quarter)");
     expectError({"-sv:bi4"}, "-sv:bi4: unknown output \"bi4\" (supported: h5, vtk, none)");
     expectError({"-sv:h5,"}, "-sv:h5,: unknown output \"\" (supported: h5, vtk, none)");
     expectError({"-sv:vtk,vtk"}, "-sv:vtk,vtk: \"vtk\" is listed twice");
@@ -282,7 +284,7 @@ TEST(RunOptions, HelpListsEveryOption) {
                           "-nsteps:N",
                           "-sv:LIST",
                           "-svres",
-                          "-cellmode:full|h",
+                          "-cellmode:auto|full|h",
                           "-progress:S",
                           "-quiet",
                           "-symplectic",
