@@ -35,7 +35,7 @@ parity() {  # name case_path nsteps extra-args...
 "$bin/gencase" "$root/cases/dambreak_plate3d/DamBreakPlate3D_Def.xml" "$work/dbplate" >/dev/null
 "$bin/gencase" "$root/cases/breaking_bar/BreakingBar_Def.xml" "$work/bar" >/dev/null
 "$bin/gencase" "$root/cases/cantilever3d_tipload/CantileverTipLoad3D_Def.xml" "$work/tip2" -dp:0.002 >/dev/null
-parity db3d_fluid_regression "$work/db3d" 40 -symplectic -wendland -viscoart:0.1 -ddt:3
+parity db3d_fluid_regression "$work/db3d" 40 -symplectic -wendland -viscoart:0.1 -ddt:3 -cellmode:h
 parity beam3d_solid_only "$work/beam" 3000
 parity tipload3d_pointloads "$work/tip2" 3000
 parity plate2d_midpoint "$work/plate" 400
@@ -49,7 +49,7 @@ parity liao2d_dualsphysics_case "$work/liao2d" 600
 # The per-pass GPU path on a small solid (the block path is the default there): same bits.
 SEASPRING_SOLID_BLOCK_MAX=0 "$bin/seaspring" -gpu -nsteps:400 -sv:none -progress:0 "$work/plate" "$work/o_pp" >"$work/plate_perpass.log" 2>&1
 echo "plate2d_midpoint gpu per-pass path: $(grep -o 'State hash: [0-9a-f]*' "$work/plate_perpass.log")" | tee -a "$table"
-echo "== parity (db3d fluid-only hash of the previous release: c831d1020e07417e) =="; cat "$table"
+echo "== parity (db3d fluid-only, cells of h: c831d1020e07417e since 2026-11-22) =="; cat "$table"
 
 if [[ -n "${SEASPRING_PARITY_ONLY:-}" ]]; then
   (cd "$work" && tar czf "$out/logs.tgz" ./*.log) 2>/dev/null
