@@ -191,20 +191,18 @@ void writeTiming(const GaugeTiming& t, pugi::xml_node n) {
     auto value = [&](const char* name, const std::string& v) {
         n.append_child(name).append_attribute("value") = v.c_str();
     };
+    auto window = [&](const char* name, const auto& start, const auto& end) {  // optional start/end
+        if (!start && !end) return;
+        pugi::xml_node w = n.append_child(name);
+        if (start) w.append_attribute("start") = num(*start).c_str();
+        if (end) w.append_attribute("end") = num(*end).c_str();
+    };
     if (t.savevtkpart) value("savevtkpart", *t.savevtkpart ? "true" : "false");
     if (t.computedt) value("computedt", num(*t.computedt));
-    if (t.compute_start || t.compute_end) {
-        pugi::xml_node w = n.append_child("computetime");
-        if (t.compute_start) w.append_attribute("start") = num(*t.compute_start).c_str();
-        if (t.compute_end) w.append_attribute("end") = num(*t.compute_end).c_str();
-    }
+    window("computetime", t.compute_start, t.compute_end);
     if (t.output) value("output", *t.output ? "true" : "false");
     if (t.outputdt) value("outputdt", num(*t.outputdt));
-    if (t.output_start || t.output_end) {
-        pugi::xml_node w = n.append_child("outputtime");
-        if (t.output_start) w.append_attribute("start") = num(*t.output_start).c_str();
-        if (t.output_end) w.append_attribute("end") = num(*t.output_end).c_str();
-    }
+    window("outputtime", t.output_start, t.output_end);
 }
 
 void writePoint(pugi::xml_node n, const char* name, const Vec3d& p) {
