@@ -11,27 +11,18 @@
 #include <cstdint>
 
 #include "physics/cell_grid.h"
+#include "physics/particle_fields.h"
 #include "physics/time_integration.h"
 #include "physics/viscosity.h"
 
 namespace seaspring::physics {
 
-/// Device or host pointers to the per-particle arrays (sorted order).
+/// Device or host pointers to the per-particle arrays (sorted order): one pointer per row of
+/// the field table (particle_fields.h); null for a field the run does not allocate.
 struct ParticleView {
-    std::uint32_t* id = nullptr;
-    Double3* pos = nullptr;
-    Float4* velrho = nullptr;
-    std::uint8_t* excl = nullptr;       ///< ExclusionReason
-    Float4* poscell = nullptr;
-    Float2* press_ovrho = nullptr;      ///< force evaluation: (pressure, 1/rho)
-    Double3* pos_pre = nullptr;         ///< symplectic: position at the start of the step
-    Float4* velrho_pre = nullptr;       ///< symplectic: state at step start; Verlet: state at n-1
-    Float4* acear = nullptr;            ///< force evaluation: (ax, ay, az, ar)
-    float* visc = nullptr;              ///< force evaluation: viscous dt measure
-    SymTensor* tau = nullptr;           ///< SPS: stress/rho (persistent)
-    SymTensor* gradvel = nullptr;       ///< SPS: velocity gradient of the last force evaluation
-    std::uint64_t* keys = nullptr;      ///< sort keys
-    std::uint32_t* perm = nullptr;      ///< sort permutation (sorted index -> previous index)
+#define SEASPRING_VIEW_MEMBER(name, type, need, flags) type* name = nullptr;
+    SEASPRING_PARTICLE_FIELDS(SEASPRING_VIEW_MEMBER)
+#undef SEASPRING_VIEW_MEMBER
 };
 
 /// Sort key of particle i (cell of its position, excluded ones last).

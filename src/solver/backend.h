@@ -15,11 +15,12 @@
 #include "physics/gauges.h"
 #include "physics/particle_updates.h"
 #include "physics/time_integration.h"
+#include "solver/particle_store.h"
 #include "solver/solid_setup.h"
 
 namespace seaspring::solver {
 
-/// The compile-time option set, chosen at run time (see dispatch in fluid_dispatch.h).
+/// The options that select the compile-time specialisations of the pair loops (force_passes.h).
 struct PhysicsChoice {
     physics::KernelType kernel = physics::KernelType::Wendland;
     physics::Viscosity visco = physics::Viscosity::Artificial;
@@ -46,11 +47,9 @@ struct BackendSetup {
     SolidSetup solid;                             ///< VCPM solids (empty when none)
 };
 
-/// State copied back to the host, in id order.
-struct HostState {
-    std::vector<physics::Double3> pos;
-    std::vector<physics::Float4> velrho;
-    std::vector<std::uint8_t> excl;
+/// State copied back to the host, in id order: the particle fields flagged physics::kHost or
+/// kHashed (particle_store.h; pos, velrho, excl), and the solids.
+struct HostState : HostParticles {
     // VCPM solids (empty when the case has none), solid-index order.
     std::vector<physics::Double3> solid_vel;     ///< double-precision velocity
     std::vector<physics::Double3> solid_force;   ///< last hydrodynamic force F_F->S [N]
@@ -81,6 +80,8 @@ inline std::vector<std::uint32_t> gaugeSlotsOfIds(const std::vector<std::uint32_
     return slot;
 }
 
+/// The time loop's view of a backend. One implementation, solver::Engine<Exec> (engine.h), over
+/// an execution policy: cpu::HostExec (OpenMP) or cuda::CudaExec.
 class Backend {
 public:
     virtual ~Backend() = default;

@@ -5,10 +5,7 @@
 ///        the physics views (SolidState, SolidBonds, ClampNodes), the snapshot of the staggered
 ///        midpoint coupling and the host copy all live here; the drivers only loop or launch.
 ///
-/// A container type provides data(), empty(), and the free functions (found by argument-
-/// dependent lookup) `assignFrom(Buf<T>&, const std::vector<T>&)` (set-up),
-/// `copyBuffer(Buf<T>&, const Buf<T>&)` (snapshot) and `copyToHost(const Buf<T>&,
-/// std::vector<T>&)`; std::vector's are below, DeviceBuffer's in cuda/device_buffer.cuh.
+/// The container interface is in buffers.h.
 #pragma once
 
 #include <cstdint>
@@ -16,24 +13,9 @@
 
 #include "physics/vcpm.h"
 #include "solver/backend.h"
+#include "solver/buffers.h"
 
 namespace seaspring::solver {
-
-template <typename T>
-void assignFrom(std::vector<T>& dst, const std::vector<T>& src) {
-    dst = src;
-}
-template <typename T>
-void copyBuffer(std::vector<T>& dst, const std::vector<T>& src) {
-    dst = src;
-}
-template <typename T>
-void copyToHost(const std::vector<T>& src, std::vector<T>& dst) {
-    dst = src;
-}
-
-template <typename T>
-using HostBuffer = std::vector<T>;
 
 template <template <typename> class Buf>
 struct SolidArrays {

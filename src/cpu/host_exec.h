@@ -1,0 +1,111 @@
+// SeaSpring — MIT licence.
+/// \file host_exec.h
+/// \brief The OpenMP execution policy of the solver's engine (solver/engine.h): host memory
+///        (std::vector), passes as OpenMP loops, the sort, and fixed-order reductions.
+#pragma once
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "solver/buffers.h"
+
+namespace seaspring::cpu {
+
+class HostExec {
+public:
+    template <typename T>
+    using Buffer = std::vector<T>;
+    /// The pair loops take the host's batched form (physics::PairBatch): same bits, SIMD lanes.
+    static constexpr bool kCompactPairs = true;
+
+    explicit HostExec(int threads) : threads_(threads > 0 ? threads : omp_get_max_threads()) {
+        omp_set_num_threads(threads_);
+    }
+    std::string name() const { return "cpu"; }
+    std::string deviceName() const;
+    int threads() const { return threads_; }
+
+    /// f(i) for i in [b, e), spread as Launch says (launch.h).
+    template <class Launch, class F>
+    void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
+        if constexpr (Launch::kCpuChunk == 0) {
+#pragma omp parallel for schedule(static)
+            for (std::int64_t i = b; i < std::int64_t(e); ++i) f(std::uint32_t(i));
+        } else {
+#pragma omp parallel for schedule(dynamic, Launch::kCpuChunk)
+            for (std::int64_t i = b; i < std::int64_t(e); ++i) f(std::uint32_t(i));
+        }
+    }
+
+    /// combine(..., f(i)) over [b, e) from `init`. `combine` must be exact, commutative and
+    /// associative (max, min, integer sums), so the grouping of the partial results, which
+    /// depends on the thread count, cannot change the result.
+    template <class T, class F, class C>
+    T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
+        T total = init;
+#pragma omp parallel
+        {
+            T local = init;
+#pragma omp for schedule(static) nowait
+            for (std::int64_t i = b; i < std::int64_t(e); ++i) local = combine(local, f(std::uint32_t(i)));
+#pragma omp critical
+            total = combine(total, local);
+        }
+        return total;
+    }
+
+    /// Runs `body(run)` with a runner run(n, pass) = pass(i) for i < n, all threads of one
+    /// parallel region sharing each pass (`omp for`, whose implied barrier orders the passes).
+    template <class Body>
+    void sequence(std::uint64_t /*work*/, std::uint32_t /*widest*/, const Body& body) const {
+#pragma omp parallel
+        {
+            TeamRun run;
+            body(run);
+        }
+    }
+
+    /// Sorts keys[b, e) ascending, carrying perm[b, e) along (keys are unique, so the order is
+    /// the only sorted order). The *_alt buffers are scratch of the same size.
+    void sortPairs(Buffer<std::uint64_t>& keys, Buffer<std::uint64_t>& keys_alt, Buffer<std::uint32_t>& perm,
+                   Buffer<std::uint32_t>& /*perm_alt*/, std::uint32_t b, std::uint32_t e) const {
+        const std::uint64_t* k = keys.data();
+        std::sort(perm.begin() + b, perm.begin() + e, [k](std::uint32_t x, std::uint32_t y) { return k[x] < k[y]; });
+        keys_alt.resize(keys.size());
+        const std::uint32_t* p = perm.data();
+        std::uint64_t* ka = keys_alt.data();
+#pragma omp parallel for schedule(static)
+        for (std::int64_t i = b; i < std::int64_t(e); ++i) ka[i] = k[p[i]];
+        std::copy(keys_alt.begin() + b, keys_alt.begin() + e, keys.begin() + b);
+    }
+    /// Size the sort's scratch for n keys (nothing to do on the host).
+    void prepareSort(std::size_t) {}
+
+    /// First index in [b, e) of sorted keys whose key is >= value.
+    std::uint32_t lowerBound(const Buffer<std::uint64_t>& keys, std::uint32_t b, std::uint32_t e,
+                             std::uint64_t value) const {
+        return std::uint32_t(std::lower_bound(keys.begin() + b, keys.begin() + e, value) - keys.begin());
+    }
+
+    template <typename T>
+    void copy(T* dst, const T* src, std::size_t n) const {
+        std::copy(src, src + n, dst);
+    }
+    void synchronize() const {}
+
+private:
+    struct TeamRun {
+        template <class F>
+        void operator()(std::uint32_t n, const F& f) const {
+#pragma omp for schedule(static)
+            for (std::int64_t i = 0; i < std::int64_t(n); ++i) f(std::uint32_t(i));
+        }
+    };
+    int threads_;
+};
+
+}  // namespace seaspring::cpu

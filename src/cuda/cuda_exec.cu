@@ -1,0 +1,68 @@
+// SeaSpring — MIT licence.
+/// \file cuda_exec.cu
+/// \brief The non-template parts of the CUDA execution policy (cuda_exec.cuh).
+#include "cuda/cuda_exec.cuh"
+
+namespace seaspring::cuda {
+
+__global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
+                                 std::uint32_t* out) {
+    std::uint32_t lo = b, hi = e;
+    while (lo < hi) {
+        const std::uint32_t mid = lo + (hi - lo) / 2;
+        if (keys[mid] < value) lo = mid + 1;
+        else hi = mid;
+    }
+    *out = lo;
+}
+
+namespace {
+/// SEASPRING_SOLID_BLOCK_MAX from the environment (a non-negative integer), else the default.
+std::uint32_t blockMaxFromEnv() {
+    const char* env = std::getenv("SEASPRING_SOLID_BLOCK_MAX");
+    if (env == nullptr || *env == '\0') return kSequenceBlockMaxDefault;
+    char* end = nullptr;
+    const unsigned long v = std::strtoul(env, &end, 10);
+    return (*end == '\0') ? std::uint32_t(std::min<unsigned long>(v, 0xffffffffUL)) : kSequenceBlockMaxDefault;
+}
+}  // namespace
+
+CudaExec::CudaExec(int device) {
+    SEASPRING_CUDA_CHECK(cudaSetDevice(device));
+    cudaDeviceProp prop{};
+    SEASPRING_CUDA_CHECK(cudaGetDeviceProperties(&prop, device));
+    name_ = prop.name;
+    reduce_blocks_ = std::uint32_t(prop.multiProcessorCount) * 4u;
+    block_max_ = blockMaxFromEnv();
+    lower_bound_.resize(1);
+}
+
+void CudaExec::prepareSort(std::size_t n) {
+    std::size_t temp = 0;
+    DeviceBuffer<std::uint64_t> k(n > 0 ? n : 1), ka(n > 0 ? n : 1);
+    DeviceBuffer<std::uint32_t> p(n > 0 ? n : 1), pa(n > 0 ? n : 1);
+    SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp, k.data(), ka.data(), p.data(), pa.data(), int(n)));
+    sort_temp_.resize(temp > 0 ? temp : 1);
+}
+
+void CudaExec::sortPairs(Buffer<std::uint64_t>& keys, Buffer<std::uint64_t>& keys_alt, Buffer<std::uint32_t>& perm,
+                         Buffer<std::uint32_t>& perm_alt, std::uint32_t b, std::uint32_t e) const {
+    if (e <= b) return;
+    std::size_t temp = sort_temp_.size();
+    SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort_temp_.data(), temp, keys.data() + b, keys_alt.data() + b,
+                                                         perm.data() + b, perm_alt.data() + b, int(e - b)));
+    std::swap(keys, keys_alt);
+    std::swap(perm, perm_alt);
+}
+
+std::uint32_t CudaExec::lowerBound(const Buffer<std::uint64_t>& keys, std::uint32_t b, std::uint32_t e,
+                                   std::uint64_t value) const {
+    if (e <= b) return b;
+    lowerBoundKernel<<<1, 1>>>(b, e, keys.data(), value, lower_bound_.data());
+    SEASPRING_CUDA_LAUNCH_CHECK();
+    std::uint32_t r = b;
+    SEASPRING_CUDA_CHECK(cudaMemcpy(&r, lower_bound_.data(), sizeof r, cudaMemcpyDeviceToHost));
+    return r;
+}
+
+}  // namespace seaspring::cuda

@@ -1,0 +1,183 @@
+// SeaSpring — MIT licence.
+/// \file cuda_exec.cuh
+/// \brief The CUDA execution policy of the solver's engine (solver/engine.h): device memory
+///        (DeviceBuffer), passes as kernel launches of one thread per index, the radix sort
+///        (CUB), fixed-shape reductions, and the single-block launch of small pass sequences.
+///        Everything runs on the default stream, in issue order.
+#pragma once
+
+#include <cub/device/device_radix_sort.cuh>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "cuda/cuda_check.cuh"
+#include "cuda/device_buffer.cuh"
+
+namespace seaspring::cuda {
+
+/// One thread per index of [b, e).
+template <int kThreads, class F>
+__global__ void __launch_bounds__(kThreads) forEachKernel(std::uint32_t b, std::uint32_t e, F f) {
+    const std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < e) f(i);
+}
+
+constexpr int kReduceThreads = 256;
+
+/// Reduction, stage 1: each block combines a grid-stride share of [b, e), then its threads in a
+/// fixed tree. Only exact combines are used (see CudaExec::reduce).
+template <class T, class F, class C>
+__global__ void __launch_bounds__(kReduceThreads) reduceBlocksKernel(std::uint32_t b, std::uint32_t e, T init, F f,
+                                                                    C combine, T* out) {
+    __shared__ T sh[kReduceThreads];
+    T m = init;
+    for (std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x; i < e; i += gridDim.x * blockDim.x)
+        m = combine(m, f(i));
+    sh[threadIdx.x] = m;
+    __syncthreads();
+    for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
+        if (threadIdx.x < s) sh[threadIdx.x] = combine(sh[threadIdx.x], sh[threadIdx.x + s]);
+        __syncthreads();
+    }
+    if (threadIdx.x == 0) out[blockIdx.x] = sh[0];
+}
+/// Reduction, stage 2: one block over the blocks' results.
+template <class T, class C>
+__global__ void __launch_bounds__(kReduceThreads) reduceFinalKernel(std::uint32_t nblocks, const T* in, T init,
+                                                                   C combine, T* out) {
+    __shared__ T sh[kReduceThreads];
+    T m = init;
+    for (std::uint32_t i = threadIdx.x; i < nblocks; i += blockDim.x) m = combine(m, in[i]);
+    sh[threadIdx.x] = m;
+    __syncthreads();
+    for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
+        if (threadIdx.x < s) sh[threadIdx.x] = combine(sh[threadIdx.x], sh[threadIdx.x + s]);
+        __syncthreads();
+    }
+    if (threadIdx.x == 0) *out = sh[0];
+}
+
+/// First index in [b, e) whose key is >= value (binary search, one thread).
+__global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
+                                 std::uint32_t* out);
+
+/// Threads of the single-block sequence kernel (block-stride loops over the indices).
+constexpr int kSequenceBlockThreads = 1024;
+
+/// Runner of a sequence inside one block: each pass is a block-stride loop, then a barrier
+/// (which also orders the pass's global-memory writes before the next pass's reads).
+struct BlockRun {
+    template <class F>
+    __device__ void operator()(std::uint32_t n, const F& f) const {
+        for (std::uint32_t i = threadIdx.x; i < n; i += blockDim.x) f(i);
+        __syncthreads();
+    }
+};
+
+template <class Body>
+__global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(Body body) {
+    BlockRun run;
+    body(run);
+}
+
+/// Default largest `work` (nsolid + nclamp for the solid sub-cycle) that `sequence` runs in
+/// one block. Measured on an H200 (tools/device_solid_paths.sh, same hashes on both paths):
+/// the Antoci gate (395 solid particles, about 3 sub-steps per fluid step) runs 3,000 coupled
+/// steps in 2.68 s in one block against 3.14 s per pass; a 1,250-particle cantilever, 20,000
+/// sub-steps in one call, 1.45 s against 1.39 s (even); at 10,000 particles 9.0 s against
+/// 1.50 s and at 48,000 4.7 s against 0.14 s for 2,000 sub-steps (one SM cannot keep up). The
+/// crossover lies between about 1,300 and 2,000 particles; 2,048 keeps every case within a
+/// few percent of the faster path. SEASPRING_SOLID_BLOCK_MAX=N overrides it.
+constexpr std::uint32_t kSequenceBlockMaxDefault = 2048;
+
+class CudaExec {
+public:
+    template <typename T>
+    using Buffer = DeviceBuffer<T>;
+    /// One thread per particle walks its candidates directly (physics::fluidPairsInRow).
+    static constexpr bool kCompactPairs = false;
+
+    explicit CudaExec(int device);
+    std::string name() const { return "gpu"; }
+    std::string deviceName() const { return name_; }
+    int threads() const { return 1; }
+
+    template <class Launch, class F>
+    void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
+        if (e <= b) return;
+        constexpr int kT = Launch::kGpuThreads;
+        forEachKernel<kT, F><<<unsigned((std::uint64_t(e - b) + kT - 1) / kT), kT>>>(b, e, f);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+    }
+
+    /// combine(..., f(i)) over [b, e) from `init` in two fixed-shape stages (4 blocks per SM,
+    /// then one); `combine` must be exact, commutative and associative. Synchronises.
+    template <class T, class F, class C>
+    T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
+        const unsigned blocks = unsigned(reduce_blocks_);
+        const std::size_t need = sizeof(T) * (blocks + 1);
+        if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
+        T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
+        reduceBlocksKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        reduceFinalKernel<T, C><<<1, kReduceThreads>>>(blocks, parts, init, combine, parts + blocks);
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        T r;
+        SEASPRING_CUDA_CHECK(cudaMemcpy(&r, parts + blocks, sizeof r, cudaMemcpyDeviceToHost));
+        return r;
+    }
+
+    /// Runs `body(run)`: in ONE single-block kernel when work <= the block limit (`widest`:
+    /// the largest pass, which sets the block's threads), else launching one grid per pass.
+    template <class Body>
+    void sequence(std::uint64_t work, std::uint32_t widest, const Body& body) const {
+        if (work <= block_max_) {
+            // Only as many warps as the widest pass needs: the barriers then wait for fewer warps.
+            const unsigned threads = unsigned(std::min<std::uint32_t>(kSequenceBlockThreads, (widest + 31u) / 32u * 32u));
+            sequenceBlockKernel<Body><<<1, threads > 0 ? threads : 32u>>>(body);
+            SEASPRING_CUDA_LAUNCH_CHECK();
+            return;
+        }
+        GridRun run{this};
+        body(run);
+    }
+
+    void prepareSort(std::size_t n);
+    /// Sorts keys[b, e) ascending carrying perm[b, e) (CUB radix sort into the *_alt buffers,
+    /// which are then swapped with keys/perm; outside [b, e) both are stale afterwards).
+    void sortPairs(Buffer<std::uint64_t>& keys, Buffer<std::uint64_t>& keys_alt, Buffer<std::uint32_t>& perm,
+                   Buffer<std::uint32_t>& perm_alt, std::uint32_t b, std::uint32_t e) const;
+    /// First index in [b, e) of sorted keys whose key is >= value (synchronises).
+    std::uint32_t lowerBound(const Buffer<std::uint64_t>& keys, std::uint32_t b, std::uint32_t e,
+                             std::uint64_t value) const;
+
+    template <typename T>
+    void copy(T* dst, const T* src, std::size_t n) const {
+        if (n > 0) SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst, src, n * sizeof(T), cudaMemcpyDeviceToDevice));
+    }
+    void synchronize() const { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
+
+private:
+    struct GridRun {
+        const CudaExec* exec;
+        template <class F>
+        void operator()(std::uint32_t n, const F& f) const {
+            exec->forEach<Launch256>(0u, n, f);
+        }
+    };
+    struct Launch256 {
+        static constexpr int kGpuThreads = 256;
+    };
+
+    std::string name_;
+    std::uint32_t reduce_blocks_ = 1;
+    std::uint32_t block_max_ = kSequenceBlockMaxDefault;
+    mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
+    mutable DeviceBuffer<std::uint32_t> lower_bound_;
+};
+
+}  // namespace seaspring::cuda

@@ -1,0 +1,81 @@
+// SeaSpring — MIT licence.
+/// \file particle_fields.h
+/// \brief The per-particle fields of the solver: ONE table. Everything that handles particles
+///        field by field derives from it: the arrays of both backends (solver/particle_store.h),
+///        the pointer view the physics functions read (ParticleView, physics/particle_updates.h),
+///        the gather after every sort (solver/divide_passes.h), the copy back to the host in id
+///        order and the state hash (solver/state_hash.cpp), and what a restart file holds.
+///
+/// Adding a field is one row: X(name, type, when it exists, flags).
+///  - `need`: the runs that allocate it (Always; Symplectic: only with the symplectic scheme;
+///    Sps: only with laminar+SPS viscosity). A field that is not allocated is a null pointer in
+///    ParticleView.
+///  - flags (FieldFlag):
+///      kSorted     reordered by every divide (its value belongs to the particle);
+///      kSortedPre  reordered only while the step-start state is still to be read (between the
+///                  symplectic predictor and corrector; always with Verlet, whose state at n-1
+///                  it holds); the next predictor overwrites it otherwise;
+///      kHashed     enters the state hash, in table order, particle by particle (id order);
+///      kHost       copied back to the host (HostState, id order) for outputs and reports;
+///      kCheckpoint part of the state a restart needs;
+///      kHalo       read across a subdomain edge by a neighbour's pair loop (multi-GPU).
+///    Fields without kSorted are rebuilt before they are read (PosCell by every divide, the
+///    force-evaluation fields by every force evaluation, the sort scratch by the sort).
+#pragma once
+
+#include <cstdint>
+
+#include "physics/sph_types.h"
+
+namespace seaspring::physics {
+
+enum FieldFlag : unsigned {
+    kSorted = 1u,
+    kSortedPre = 2u,
+    kHashed = 4u,
+    kHost = 8u,
+    kCheckpoint = 16u,
+    kHalo = 32u,
+};
+
+/// The runs that allocate a field.
+enum class FieldNeed { Always, Symplectic, Sps };
+
+// clang-format off
+#define SEASPRING_PARTICLE_FIELDS(X)                                                                        \
+    X(id,          std::uint32_t,            Always,     kSorted | kCheckpoint | kHalo)                     \
+    X(pos,         ::seaspring::physics::Double3, Always, kSorted | kHashed | kHost | kCheckpoint | kHalo) \
+    X(velrho,      ::seaspring::physics::Float4,  Always, kSorted | kHashed | kHost | kCheckpoint | kHalo) \
+    X(excl,        std::uint8_t,             Always,     kSorted | kHashed | kHost | kCheckpoint)          \
+    X(poscell,     ::seaspring::physics::Float4,  Always, kHalo)                                            \
+    X(press_ovrho, ::seaspring::physics::Float2,  Always, kHalo)                                            \
+    X(pos_pre,     ::seaspring::physics::Double3, Symplectic, kSortedPre | kCheckpoint)                     \
+    X(velrho_pre,  ::seaspring::physics::Float4,  Always, kSortedPre | kCheckpoint)                         \
+    X(acear,       ::seaspring::physics::Float4,  Always, 0u)                                               \
+    X(visc,        float,                    Always,     0u)                                                \
+    X(tau,         ::seaspring::physics::SymTensor, Sps,  kSorted | kCheckpoint | kHalo)                    \
+    X(gradvel,     ::seaspring::physics::SymTensor, Sps,  0u)                                               \
+    X(keys,        std::uint64_t,            Always,     0u)                                                \
+    X(perm,        std::uint32_t,            Always,     0u)
+// clang-format on
+//  id          particle id (position in the case's id order)
+//  pos         position [m] (double)
+//  velrho      velocity [m/s] and density [kg/m^3]
+//  excl        ExclusionReason (0 active)
+//  poscell     cell-relative float position and packed cell (cell_grid.h)
+//  press_ovrho force evaluation: (pressure, 1/rho)
+//  pos_pre     symplectic: position at the start of the step
+//  velrho_pre  symplectic: state at the start of the step; Verlet: state at n-1
+//  acear       force evaluation: (ax, ay, az, d rho/dt)
+//  visc        force evaluation: viscous dt measure
+//  tau         SPS: stress/rho (persistent between evaluations)
+//  gradvel     SPS: velocity gradient of the last evaluation
+//  keys, perm  sort scratch: key (cell, id) and permutation (sorted index -> previous index)
+
+/// Whether a run allocates a field with `need`.
+inline bool fieldNeeded(FieldNeed need, bool symplectic, bool sps) {
+    return need == FieldNeed::Always || (need == FieldNeed::Symplectic && symplectic) ||
+           (need == FieldNeed::Sps && sps);
+}
+
+}  // namespace seaspring::physics

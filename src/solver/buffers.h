@@ -1,0 +1,34 @@
+// SeaSpring — MIT licence.
+/// \file buffers.h
+/// \brief The container interface the backend-independent code (particle_store.h,
+///        solid_arrays.h, engine.h) uses for arrays: `Buf<T>` is std::vector on the host
+///        (HostExec) and cuda::DeviceBuffer on the GPU (CudaExec). A container provides
+///        data(), size(), empty() and resize(n) (contents unspecified after a size change), and
+///        the free functions below, found by argument-dependent lookup; DeviceBuffer's are in
+///        cuda/device_buffer.cuh.
+#pragma once
+
+#include <vector>
+
+namespace seaspring::solver {
+
+template <typename T>
+using HostBuffer = std::vector<T>;
+
+/// dst = a copy of the host vector src (set-up; uploads on the GPU).
+template <typename T>
+void assignFrom(std::vector<T>& dst, const std::vector<T>& src) {
+    dst = src;
+}
+/// dst = a copy of src (same container kind; device to device on the GPU).
+template <typename T>
+void copyBuffer(std::vector<T>& dst, const std::vector<T>& src) {
+    dst = src;
+}
+/// dst = the contents of src, on the host.
+template <typename T>
+void copyToHost(const std::vector<T>& src, std::vector<T>& dst) {
+    dst = src;
+}
+
+}  // namespace seaspring::solver

@@ -1,0 +1,322 @@
+// SeaSpring — MIT licence.
+/// \file engine.h
+/// \brief The one implementation of Backend: the particle arrays (field table), the divide,
+///        the force evaluation, the integration, the VCPM solids and the gauges, written once as
+///        passes (particle_passes.h, force_passes.h, solid_passes.h) over an execution policy
+///        `Exec`: cpu::HostExec (OpenMP loops, host memory) or cuda::CudaExec (kernel launches,
+///        device memory). An Exec provides Buffer<T>, forEach<Launch>(b, e, pass),
+///        reduce(b, e, init, value, combine), sequence(work, widest, body), sortPairs,
+///        lowerBound, copy and synchronize; everything else is here, so both backends run the
+///        same passes in the same order and give the same bits.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "solver/backend.h"
+#include "solver/force_passes.h"
+#include "solver/launch.h"
+#include "solver/particle_passes.h"
+#include "solver/particle_store.h"
+#include "solver/solid_arrays.h"
+#include "solver/solid_passes.h"
+
+namespace seaspring::solver {
+
+template <class Exec>
+class Engine final : public Backend {
+    template <typename T>
+    using Buf = typename Exec::template Buffer<T>;
+
+public:
+    explicit Engine(Exec exec) : exec_(std::move(exec)) {}
+    std::string name() const override { return exec_.name(); }
+    std::string deviceName() const override { return exec_.deviceName(); }
+    int threads() const override { return exec_.threads(); }
+
+    void init(const BackendSetup& s) override {
+        setup_ = s;
+        nbound_ = s.nbound;
+        nfluid_ = s.nfluid;
+        const std::size_t np = std::size_t(s.nbound) + s.nfluid;
+        const bool sps = s.physics.visco == physics::Viscosity::LaminarSps;
+        p_.forEachField([&](auto& buf, unsigned, physics::FieldNeed need) {
+            using T = std::remove_pointer_t<decltype(buf.data())>;
+            if (physics::fieldNeeded(need, s.symplectic, sps)) assignFrom(buf, std::vector<T>(np, T{}));
+            else buf = Buf<T>();
+        });
+        std::vector<std::uint32_t> ids(np);
+        std::iota(ids.begin(), ids.end(), 0u);
+        assignFrom(p_.id, ids);
+        assignFrom(p_.pos, s.pos);
+        assignFrom(p_.velrho, s.velrho);
+        assignFrom(p_.excl, std::vector<std::uint8_t>(np, physics::kActive));
+        if (!p_.pos_pre.empty()) assignFrom(p_.pos_pre, s.pos);
+        assignFrom(p_.velrho_pre, s.velrho);
+        keys_alt_.resize(np);
+        perm_alt_.resize(np);
+        scratch_.resize((np * 24 + 15) / 16);  // the largest field type (24 bytes) for every particle
+        const std::size_t nc = std::size_t(s.grid.cellCount());
+        cs_bound_.resize(nc + 1);
+        cs_fluid_.resize(nc + 1);
+        bound_near_.resize(nc);
+        near_tmp_.resize(nc);
+        assignFrom(moving_pos0_, s.moving_pos0);
+        assignFrom(moving_object_, s.moving_object);
+        motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
+        exec_.prepareSort(np);
+        if (!s.solid.empty()) solid_.init(s.solid);
+        sortRange(0, nbound_, cs_bound_, true);
+        boundNear();
+        updateSolidSlots();
+    }
+
+    void divide(bool keep_step_start) override {
+        const bool pre = !setup_.symplectic || keep_step_start;
+        // Moving boundaries and solid particles move inside the boundary block: re-sort it, and
+        // find the solid particles again. Fixed walls stay as init sorted them.
+        if (setup_.nmoving > 0 || solid_.n > 0) {
+            sortRange(0, nbound_, cs_bound_, pre);
+            boundNear();
+            updateSolidSlots();
+        }
+        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
+    }
+
+    void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) override {
+        if (setup_.nmoving == 0 || nbound_ == 0) return;
+        assignFrom(motions_, motions);
+        exec_.template forEach<LaunchDefault>(0u, nbound_,
+                                              MotionPass{p_.view(), setup_.first_moving, setup_.nmoving,
+                                                         moving_pos0_.data(), moving_object_.data(), motions_.data()});
+    }
+
+    physics::DtMaxima computeForces() override {
+        const ForceArgs a = forceArgs();
+        const physics::FluidConstants& c = setup_.fluid;
+        exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, c});
+        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
+            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
+        });
+        // The stress for the next evaluation (DualSPHysics lags it by one evaluation).
+        if (setup_.physics.visco == physics::Viscosity::LaminarSps)
+            exec_.template forEach<LaunchDefault>(a.nbound, a.np, SpsTauPass{a.v, c.sps_smag, c.sps_blin});
+        return exec_.reduce(0u, a.np, physics::DtMaxima{}, DtMaximaPass{a.nbound, a.v, c.dt_all_particles != 0},
+                            DtMaximaCombine{});
+    }
+
+    void symplecticPredictor(double dt) override {
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PredictorPass{nbound_, p_.view(), dt, setup_.step});
+    }
+    void symplecticCorrector(double dt) override {
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, CorrectorPass{nbound_, p_.view(), dt, setup_.step});
+    }
+    void verletStep(double dt, bool euler) override {
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_,
+                                              VerletPass{nbound_, p_.view(), dt, euler, setup_.step});
+    }
+
+    void solidHydroForces() override {
+        if (solid_.n > 0) hydroForces(solid_.slot.data(), solid_.n, solid_.fluid_force.data());
+    }
+    void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
+                    bool ledger) override {
+        if (solid_.n == 0) return;
+        if (n > 0) solidSubCycle(t0, dt, n, motions);
+        solidToBoundary(dt * n, ledger);
+    }
+    void solidSave() override { solid_.save(); }
+    void solidRestore() override {
+        if (solid_.n == 0) return;
+        solid_.restore();
+        solidToBoundary(0.0, false);
+    }
+
+    void boundaryForces(std::vector<physics::Double3>& out) override {
+        out.assign(nbound_, physics::Double3{0, 0, 0});
+        if (nbound_ == 0) return;
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PressurePass{p_.view(), setup_.fluid});
+        Buf<physics::Double3> force;  // output times only
+        force.resize(nbound_);
+        hydroForces(nullptr, nbound_, force.data());
+        std::vector<physics::Double3> sorted;
+        std::vector<std::uint32_t> ids;
+        copyToHost(force, sorted);
+        copyToHost(p_.id, ids);
+        for (std::uint32_t i = 0; i < nbound_; ++i) out[ids[i]] = sorted[i];
+    }
+
+    void setGauges(const GaugeQueries& q) override {
+        assignFrom(gauge_points_, q.points);
+        assignFrom(gauge_rows_, q.maxz_rows);
+        gauge_samples_.resize(q.points.size());
+        gauge_maxz_.resize(q.maxz_rows.size());
+        assignFrom(gauge_positions_, std::vector<physics::Double3>(q.ids.size(), physics::Double3{0, 0, 0}));
+        gauge_nids_ = std::uint32_t(q.ids.size());
+        if (gauge_nids_ > 0) assignFrom(gauge_slot_of_id_, gaugeSlotsOfIds(q.ids, nbound_));
+    }
+    void gauges(GaugeResults& out) override {
+        const std::uint32_t npts = std::uint32_t(gauge_points_.size()), nrows = std::uint32_t(gauge_rows_.size());
+        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
+            constexpr int kDim = decltype(dim)::value;
+            exec_.template forEach<LaunchGauges>(
+                0u, npts,
+                GaugeSamplePass<decltype(kernel), kDim>{gauge_points_.data(), cs_fluid_.data(), p_.poscell.data(),
+                                                        p_.velrho.data(), setup_.fluid, setup_.grid,
+                                                        gauge_samples_.data()});
+            exec_.template forEach<LaunchGauges>(
+                0u, nrows, MaxzRowPass<kDim>{gauge_rows_.data(), cs_fluid_.data(), p_.pos.data(), gauge_maxz_.data()});
+        });
+        if (gauge_nids_ > 0)
+            exec_.template forEach<LaunchGauges>(0u, nbound_,
+                                                 GaugePositionPass{p_.id.data(), p_.pos.data(),
+                                                                   gauge_slot_of_id_.data(), gauge_positions_.data()});
+        copyToHost(gauge_samples_, out.samples);
+        copyToHost(gauge_maxz_, out.maxz);
+        copyToHost(gauge_positions_, out.positions);
+    }
+
+    std::uint32_t activeFluid() const override { return nfluid_; }
+    void synchronize() override { exec_.synchronize(); }
+
+    void download(HostState& out) override {
+        exec_.synchronize();
+        std::vector<std::uint32_t> ids;
+        copyToHost(p_.id, ids);
+        forEachFieldPair(p_, out, [&](auto& buf, auto& host, unsigned flags) {
+            if ((flags & (physics::kHost | physics::kHashed)) == 0) return;
+            std::remove_reference_t<decltype(host)> sorted;
+            copyToHost(buf, sorted);
+            host.resize(sorted.size());
+            for (std::size_t i = 0; i < sorted.size(); ++i) host[ids[i]] = sorted[i];
+        });
+        if (solid_.n > 0) solid_.download(out);
+    }
+
+private:
+    ForceArgs forceArgs() {
+        ForceArgs a;
+        a.v = p_.view();
+        a.in.poscell = a.v.poscell;
+        a.in.velrho = a.v.velrho;
+        a.in.cell_start_bound = cs_bound_.data();
+        a.in.cell_start_fluid = cs_fluid_.data();
+        a.in.tau = a.v.tau;  // null without SPS
+        a.in.press_ovrho = a.v.press_ovrho;
+        a.in.bound_near = bound_near_.data();
+        a.c = setup_.fluid;
+        a.g = setup_.grid;
+        a.nbound = nbound_;
+        a.np = nbound_ + nfluid_;
+        return a;
+    }
+
+    /// The hydrodynamic force on boundary particles slot[0..n) (null: the block [0, n)).
+    void hydroForces(const std::uint32_t* slot, std::uint32_t n, physics::Double3* out) {
+        const ForceArgs a = forceArgs();
+        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
+            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::hydro(exec_, setup_.physics, a, slot, n, out);
+        });
+    }
+
+    /// Reorders [b, e) of a sorted field by the permutation of the last sort.
+    template <typename T>
+    void gather(Buf<T>& arr, std::uint32_t b, std::uint32_t e) {
+        if (arr.empty() || e <= b) return;
+        T* tmp = reinterpret_cast<T*>(scratch_.data());
+        exec_.template forEach<LaunchDefault>(b, e, GatherPass<T>{p_.perm.data(), arr.data(), tmp});
+        exec_.copy(arr.data() + b, tmp + b, e - b);
+    }
+
+    /// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort
+    /// (kSorted; kSortedPre when `pre`); rebuilds `cs` for the active part. Returns its end.
+    std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, Buf<std::uint32_t>& cs, bool pre) {
+        if (e > b) {
+            exec_.template forEach<LaunchDefault>(b, e, SortKeyPass{p_.view(), setup_.grid});
+            exec_.sortPairs(p_.keys, keys_alt_, p_.perm, perm_alt_, b, e);
+            p_.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
+                if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gather(buf, b, e);
+            });
+        }
+        const std::uint32_t active_end = e > b ? exec_.lowerBound(p_.keys, b, e, physics::kExcludedCell << 32) : b;
+        exec_.template forEach<LaunchDefault>(0u, std::uint32_t(cs.size()),
+                                              CellStartOuterPass{b, active_end, p_.keys.data(), cs.data()});
+        exec_.template forEach<LaunchDefault>(b, active_end, CellStartFillPass{b, p_.keys.data(), cs.data()});
+        return active_end;
+    }
+
+    /// The boundary block's "near" flags (physics::cellOccupiedAt, then dilateCellsAt along x, y, z).
+    void boundNear() {
+        const std::uint32_t nc = setup_.grid.cellCount();
+        const physics::CellGrid& g = setup_.grid;
+        std::uint8_t *a = bound_near_.data(), *t = near_tmp_.data();
+        exec_.template forEach<LaunchDefault>(0u, nc, CellOccupiedPass{cs_bound_.data(), a});
+        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{0, g, a, t});
+        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{1, g, t, a});
+        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{2, g, a, t});
+        exec_.copy(a, t, nc);
+    }
+
+    /// slot[s] = sorted index of solid particle s.
+    void updateSolidSlots() {
+        if (solid_.n == 0) return;
+        exec_.template forEach<LaunchDefault>(0u, nbound_,
+                                              SolidSlotPass{p_.id.data(), solid_.first, solid_.n, solid_.slot.data()});
+    }
+
+    /// n solid sub-steps of dt from t0 (clamp nodes moved by `motions` over the whole interval).
+    void solidSubCycle(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
+        solid_.t0 = t0;
+        solid_.span = dt * double(n);
+        ClampMotion cm;
+        cm.pos_initial = solid_.clamp_pos_initial.data();
+        cm.object = solid_.clamp_object.data();
+        cm.pos_start = solid_.clamp_start.data();
+        cm.pos_end = solid_.clamp_end.data();
+        if (solid_.nclamp > 0 && !motions.empty()) {
+            assignFrom(solid_motions_, motions);
+            cm.motions = solid_motions_.data();
+        }
+        const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
+                                 setup_.step.gx, setup_.step.gy, setup_.step.gz};
+        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, std::max(solid_.n, solid_.nclamp), body);
+    }
+
+    /// Solid positions and velocities into the boundary block after a sub-cycle of length dt;
+    /// `ledger`: accumulate the impulse and work of the hydrodynamic force.
+    void solidToBoundary(double dt, bool ledger) {
+        exec_.template forEach<LaunchDefault>(
+            0u, solid_.n,
+            SolidToBoundaryPass{solid_.slot.data(), solid_.pos.data(), solid_.vel.data(), solid_.fluid_force.data(), dt,
+                                solid_.impulse.data(), solid_.work.data(), ledger, p_.pos.data(), p_.velrho.data()});
+    }
+
+    Exec exec_;
+    BackendSetup setup_;
+    std::uint32_t nbound_ = 0, nfluid_ = 0;
+    ParticleStore<Exec::template Buffer> p_;
+    Buf<std::uint64_t> keys_alt_;
+    Buf<std::uint32_t> perm_alt_;
+    Buf<physics::Float4> scratch_;  ///< gather scratch, 24 bytes per particle
+    Buf<std::uint32_t> cs_bound_, cs_fluid_;
+    Buf<std::uint8_t> bound_near_, near_tmp_;
+    Buf<physics::Double3> moving_pos0_;
+    Buf<std::uint16_t> moving_object_;
+    Buf<physics::RigidMotionGpu> motions_, solid_motions_;
+    SolidArrays<Exec::template Buffer> solid_;
+    Buf<physics::Float4> gauge_points_;
+    Buf<physics::MaxzRow> gauge_rows_;
+    Buf<physics::GaugeSample> gauge_samples_;
+    Buf<double> gauge_maxz_;
+    Buf<physics::Double3> gauge_positions_;
+    Buf<std::uint32_t> gauge_slot_of_id_;
+    std::uint32_t gauge_nids_ = 0;
+};
+
+}  // namespace seaspring::solver

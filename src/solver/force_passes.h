@@ -1,0 +1,53 @@
+// SeaSpring — MIT licence.
+/// \file force_passes.h
+/// \brief The pair-loop passes of a force evaluation, specialised at compile time on what
+///        each reads: the fluid particles' loop on (kernel, viscosity, density diffusion,
+///        dimension), the boundary particles' loop on (kernel, dimension), the hydrodynamic
+///        force on boundary particles on (kernel, viscosity, dimension). Declared here,
+///        defined in force_passes_impl.h, and instantiated once per backend, kernel and
+///        dimension in the units CMake generates from force_instances.in (src/CMakeLists.txt).
+#pragma once
+
+#include <cstdint>
+
+#include "physics/cell_grid.h"
+#include "physics/fluid_constants.h"
+#include "physics/fluid_pair_terms.h"
+#include "physics/particle_updates.h"
+#include "solver/backend.h"
+
+namespace seaspring::solver {
+
+/// What the pair loops read and write (pointers of the executing backend).
+struct ForceArgs {
+    physics::ParticleView v;
+    physics::InteractionInputs in;  ///< tau set only with SPS
+    physics::FluidConstants c;
+    physics::CellGrid g;
+    std::uint32_t nbound = 0, np = 0;
+};
+
+template <class Exec, class Kernel, int kDim>
+struct ForcePasses {
+    /// The pair loops of one force evaluation: boundary particles [0, nbound) and fluid
+    /// particles [nbound, np), after the pressure pass (acear, visc and, with SPS, gradvel).
+    static void pairs(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a);
+    /// The hydrodynamic force on boundary particles: out[s] for sorted index slot[s], or for
+    /// sorted index s when `slot` is null.
+    static void hydro(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a, const std::uint32_t* slot,
+                      std::uint32_t n, physics::Double3* out);
+};
+
+/// Calls f(Kernel{}, std::integral_constant<int, dim>{}) for the run's kernel and dimension.
+template <class F>
+void dispatchKernelDim(const PhysicsChoice& c, F&& f) {
+    if (c.kernel == physics::KernelType::Wendland) {
+        if (c.dim == 2) f(physics::WendlandKernel{}, std::integral_constant<int, 2>{});
+        else f(physics::WendlandKernel{}, std::integral_constant<int, 3>{});
+    } else {
+        if (c.dim == 2) f(physics::CubicKernel{}, std::integral_constant<int, 2>{});
+        else f(physics::CubicKernel{}, std::integral_constant<int, 3>{});
+    }
+}
+
+}  // namespace seaspring::solver

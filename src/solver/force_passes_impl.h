@@ -1,0 +1,112 @@
+// SeaSpring — MIT licence.
+/// \file force_passes_impl.h
+/// \brief The definitions of force_passes.h: the pair-loop functors (each calls one function of
+///        physics/fluid_interaction.h or physics/solid_coupling.h) and the run-time to
+///        compile-time option dispatch. Included only by the generated per-option units.
+#pragma once
+
+#include "physics/fluid_interaction.h"
+#include "physics/solid_coupling.h"
+#include "solver/force_passes.h"
+#include "solver/launch.h"
+
+namespace seaspring::solver {
+
+/// Fluid particle i: all its pairs (kCompact: the host's batched form, same bits).
+template <class Opt, bool kCompact>
+struct FluidForcesPass {
+    ForceArgs a;
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        const physics::FluidAccum acc = physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g);
+        a.v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
+        a.v.visc[i] = acc.visc;
+        if (Opt::sps) a.v.gradvel[i] = acc.gradvel;
+    }
+};
+
+/// DBC boundary particle i: continuity and the viscous dt measure.
+template <class Opt, bool kCompact>
+struct BoundForcesPass {
+    ForceArgs a;
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        float ar, visc;
+        physics::boundParticleForces<Opt, kCompact>(i, a.in, a.c, a.g, ar, visc);
+        a.v.acear[i] = physics::Float4{0.f, 0.f, 0.f, ar};
+        a.v.visc[i] = visc;
+    }
+};
+
+/// The hydrodynamic force on boundary particle slot[s] (or s).
+template <class Opt>
+struct HydroForcePass {
+    ForceArgs a;
+    const std::uint32_t* slot;
+    physics::Double3* out;
+    SEASPRING_HD void operator()(std::uint32_t s) const {
+        out[s] = physics::hydroForceOnBoundary<Opt>(slot ? slot[s] : s, a.in, a.c, a.g);
+    }
+};
+
+/// Calls f(FluidOptions<...>{}) for the run's viscosity and density diffusion.
+template <class Kernel, int kDim, class F>
+void dispatchViscoDdt(const PhysicsChoice& c, F&& f) {
+    using physics::DensityDiffusion;
+    using physics::FluidOptions;
+    using physics::Viscosity;
+    auto ddt = [&](auto visco) {
+        constexpr Viscosity kV = decltype(visco)::value;
+        switch (c.ddt) {
+            case DensityDiffusion::None: f(FluidOptions<Kernel, kV, DensityDiffusion::None, kDim>{}); break;
+            case DensityDiffusion::Molteni: f(FluidOptions<Kernel, kV, DensityDiffusion::Molteni, kDim>{}); break;
+            case DensityDiffusion::Fourtakas: f(FluidOptions<Kernel, kV, DensityDiffusion::Fourtakas, kDim>{}); break;
+            case DensityDiffusion::FourtakasFull:
+                f(FluidOptions<Kernel, kV, DensityDiffusion::FourtakasFull, kDim>{});
+                break;
+        }
+    };
+    switch (c.visco) {
+        case Viscosity::Artificial: ddt(std::integral_constant<Viscosity, Viscosity::Artificial>{}); break;
+        case Viscosity::LaminarSps: ddt(std::integral_constant<Viscosity, Viscosity::LaminarSps>{}); break;
+        case Viscosity::Laminar: ddt(std::integral_constant<Viscosity, Viscosity::Laminar>{}); break;
+    }
+}
+
+/// Calls f(FluidOptions<Kernel, visco, None, kDim>{}) for the run's viscosity (the hydrodynamic
+/// force does not read the density diffusion).
+template <class Kernel, int kDim, class F>
+void dispatchVisco(const PhysicsChoice& c, F&& f) {
+    using physics::DensityDiffusion;
+    using physics::FluidOptions;
+    using physics::Viscosity;
+    switch (c.visco) {
+        case Viscosity::Artificial: f(FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>{}); break;
+        case Viscosity::LaminarSps: f(FluidOptions<Kernel, Viscosity::LaminarSps, DensityDiffusion::None, kDim>{}); break;
+        case Viscosity::Laminar: f(FluidOptions<Kernel, Viscosity::Laminar, DensityDiffusion::None, kDim>{}); break;
+    }
+}
+
+template <class Exec, class Kernel, int kDim>
+void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a) {
+    using physics::DensityDiffusion;
+    using physics::FluidOptions;
+    using physics::Viscosity;
+    constexpr bool kCompact = Exec::kCompactPairs;
+    if (a.np > a.nbound)
+        dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
+            exec.template forEach<LaunchFluidPairs>(a.nbound, a.np, FluidForcesPass<decltype(opt), kCompact>{a});
+        });
+    // The boundary loop reads only the kernel and the dimension.
+    using BoundOpt = FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>;
+    if (a.nbound > 0) exec.template forEach<LaunchBoundPairs>(0u, a.nbound, BoundForcesPass<BoundOpt, kCompact>{a});
+}
+
+template <class Exec, class Kernel, int kDim>
+void ForcePasses<Exec, Kernel, kDim>::hydro(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a,
+                                            const std::uint32_t* slot, std::uint32_t n, physics::Double3* out) {
+    if (n == 0) return;
+    dispatchVisco<Kernel, kDim>(choice, [&](auto opt) {
+        exec.template forEach<LaunchHydro>(0u, n, HydroForcePass<decltype(opt)>{a, slot, out});
+    });
+}
+
+}  // namespace seaspring::solver

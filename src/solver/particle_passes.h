@@ -1,0 +1,173 @@
+// SeaSpring — MIT licence.
+/// \file particle_passes.h
+/// \brief The per-particle passes of the fluid step other than the pair loops: each is one
+///        functor whose operator()(i) calls one function of src/physics for index i. An
+///        execution policy runs it (`exec.forEach<Launch>(b, e, pass)`: an OpenMP loop or one
+///        CUDA thread per index), so both backends run the same code.
+#pragma once
+
+#include <cstdint>
+
+#include "physics/cell_grid.h"
+#include "physics/fluid_pair_terms.h"
+#include "physics/gauges.h"
+#include "physics/particle_updates.h"
+#include "physics/time_integration.h"
+
+namespace seaspring::solver {
+
+// ---- divide: sort by (cell, id), cell ranges, "near" flags, PosCell ----------------------
+
+struct SortKeyPass {
+    physics::ParticleView v;
+    physics::CellGrid g;
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        v.keys[i] = physics::sortKeyAt(i, v, g);
+        v.perm[i] = i;
+    }
+};
+
+/// dst[i] = src[perm[i]] (perm: sorted index -> previous index).
+template <typename T>
+struct GatherPass {
+    const std::uint32_t* perm;
+    const T* src;
+    T* dst;
+    SEASPRING_HD void operator()(std::uint32_t i) const { dst[i] = src[perm[i]]; }
+};
+
+struct CellStartOuterPass {
+    std::uint32_t b, e;
+    const std::uint64_t* keys;
+    std::uint32_t* cell_start;
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellStartOuterAt(c, b, e, keys, cell_start); }
+};
+
+struct CellStartFillPass {
+    std::uint32_t b;
+    const std::uint64_t* keys;
+    std::uint32_t* cell_start;
+    SEASPRING_HD void operator()(std::uint32_t k) const { physics::cellStartFillAt(k, b, keys, cell_start); }
+};
+
+struct CellOccupiedPass {
+    const std::uint32_t* cell_start;
+    std::uint8_t* occ;
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellOccupiedAt(c, cell_start, occ); }
+};
+
+struct DilateCellsPass {
+    int axis;
+    physics::CellGrid g;
+    const std::uint8_t* in;
+    std::uint8_t* out;
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::dilateCellsAt(c, axis, g, in, out); }
+};
+
+struct PosCellPass {
+    physics::ParticleView v;
+    physics::CellGrid g;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::posCellAt(i, v, g); }
+};
+
+// ---- moving boundaries, integration ------------------------------------------------------
+
+struct MotionPass {
+    physics::ParticleView v;
+    std::uint32_t first_moving, nmoving;
+    const physics::Double3* pos0;
+    const std::uint16_t* object;
+    const physics::RigidMotionGpu* motions;
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        physics::motionAt(i, v, first_moving, nmoving, pos0, object, motions);
+    }
+};
+
+struct PredictorPass {
+    std::uint32_t nbound;
+    physics::ParticleView v;
+    double dt;
+    physics::StepConstants s;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::symplecticPredictorAt(i, nbound, v, dt, s); }
+};
+
+struct CorrectorPass {
+    std::uint32_t nbound;
+    physics::ParticleView v;
+    double dt;
+    physics::StepConstants s;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::symplecticCorrectorAt(i, nbound, v, dt, s); }
+};
+
+struct VerletPass {
+    std::uint32_t nbound;
+    physics::ParticleView v;
+    double dt;
+    bool euler;
+    physics::StepConstants s;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::verletAt(i, nbound, v, dt, euler, s); }
+};
+
+// ---- around the pair loops: pressure, SPS stress, dt maxima ------------------------------
+
+struct PressurePass {
+    physics::ParticleView v;
+    physics::FluidConstants c;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::pressureAt(i, v, c); }
+};
+
+struct SpsTauPass {
+    physics::ParticleView v;
+    float smag, blin;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::spsTauAt(i, v, smag, blin); }
+};
+
+/// Value pass of the dt reduction (combined with DtMaximaCombine: max, exact in any order).
+struct DtMaximaPass {
+    std::uint32_t nbound;
+    physics::ParticleView v;
+    bool all_particles;
+    SEASPRING_HD physics::DtMaxima operator()(std::uint32_t i) const {
+        return physics::dtMaximaAt(i, nbound, v, all_particles);
+    }
+};
+struct DtMaximaCombine {
+    SEASPRING_HD physics::DtMaxima operator()(const physics::DtMaxima& a, const physics::DtMaxima& b) const {
+        return physics::combineDtMaxima(a, b);
+    }
+};
+
+// ---- gauges ------------------------------------------------------------------------------
+
+template <class Kernel, int kDim>
+struct GaugeSamplePass {
+    const physics::Float4* points;
+    const std::uint32_t* cell_start_fluid;
+    const physics::Float4* poscell;
+    const physics::Float4* velrho;
+    physics::FluidConstants c;
+    physics::CellGrid g;
+    physics::GaugeSample* out;
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        out[k] = physics::gaugeSampleAt<Kernel, kDim>(points[k], cell_start_fluid, poscell, velrho, c, g);
+    }
+};
+
+template <int kDim>
+struct MaxzRowPass {
+    const physics::MaxzRow* rows;
+    const std::uint32_t* cell_start_fluid;
+    const physics::Double3* pos;
+    double* out;
+    SEASPRING_HD void operator()(std::uint32_t k) const { out[k] = physics::maxzRowAt<kDim>(rows[k], cell_start_fluid, pos); }
+};
+
+struct GaugePositionPass {
+    const std::uint32_t* id;
+    const physics::Double3* pos;
+    const std::uint32_t* slot_of_id;
+    physics::Double3* out;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::gaugePositionAt(i, id, pos, slot_of_id, out); }
+};
+
+}  // namespace seaspring::solver

@@ -1,0 +1,78 @@
+// SeaSpring — MIT licence.
+/// \file particle_store.h
+/// \brief The per-particle arrays of a backend, one per row of the field table
+///        (physics/particle_fields.h), in `Buf` containers (buffers.h), sorted order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "physics/particle_fields.h"
+#include "physics/particle_updates.h"
+#include "solver/buffers.h"
+
+namespace seaspring::solver {
+
+template <template <typename> class Buf>
+struct ParticleStore {
+#define SEASPRING_STORE_MEMBER(name, type, need, flags) Buf<type> name;
+    SEASPRING_PARTICLE_FIELDS(SEASPRING_STORE_MEMBER)
+#undef SEASPRING_STORE_MEMBER
+
+    /// Calls f(buffer, flags, need) for every field, in table order.
+    template <class F>
+    void forEachField(F&& f) {
+        using namespace ::seaspring::physics;
+#define SEASPRING_STORE_VISIT(name, type, need, flags) f(name, unsigned(flags), FieldNeed::need);
+        SEASPRING_PARTICLE_FIELDS(SEASPRING_STORE_VISIT)
+#undef SEASPRING_STORE_VISIT
+    }
+
+    /// Pointers to the arrays (null for a field this run does not allocate).
+    physics::ParticleView view() {
+        physics::ParticleView v;
+#define SEASPRING_STORE_VIEW(name, type, need, flags) v.name = name.empty() ? nullptr : name.data();
+        SEASPRING_PARTICLE_FIELDS(SEASPRING_STORE_VIEW)
+#undef SEASPRING_STORE_VIEW
+        return v;
+    }
+};
+
+/// Particle arrays copied to the host in id order: the fields flagged physics::kHost (the
+/// others stay empty), one member per row of the field table.
+struct HostParticles {
+#define SEASPRING_HOST_MEMBER(name, type, need, flags) std::vector<type> name;
+    SEASPRING_PARTICLE_FIELDS(SEASPRING_HOST_MEMBER)
+#undef SEASPRING_HOST_MEMBER
+
+    /// Calls f(vector, flags) for every field, in table order.
+    template <class F>
+    void forEachField(F&& f) {
+        using namespace ::seaspring::physics;
+#define SEASPRING_HOST_VISIT(name, type, need, flags) f(name, unsigned(flags));
+        SEASPRING_PARTICLE_FIELDS(SEASPRING_HOST_VISIT)
+#undef SEASPRING_HOST_VISIT
+    }
+    template <class F>
+    void forEachField(F&& f) const {
+        using namespace ::seaspring::physics;
+#define SEASPRING_HOST_VISIT(name, type, need, flags) f(name, unsigned(flags));
+        SEASPRING_PARTICLE_FIELDS(SEASPRING_HOST_VISIT)
+#undef SEASPRING_HOST_VISIT
+    }
+};
+
+}  // namespace seaspring::solver
+
+namespace seaspring::solver {
+
+/// Calls f(store_buffer, host_vector, flags) for every field, in table order.
+template <template <typename> class Buf, class F>
+void forEachFieldPair(ParticleStore<Buf>& s, HostParticles& h, F&& f) {
+    using namespace ::seaspring::physics;
+#define SEASPRING_PAIR_VISIT(name, type, need, flags) f(s.name, h.name, unsigned(flags));
+    SEASPRING_PARTICLE_FIELDS(SEASPRING_PAIR_VISIT)
+#undef SEASPRING_PAIR_VISIT
+}
+
+}  // namespace seaspring::solver
