@@ -3,14 +3,22 @@
 # copies the shared libraries the binaries need (HDF5, pugixml, their dependencies; glibc
 # excluded) into build-dev/lib, so that build-dev can be carried to the device machine and run
 # there with LD_LIBRARY_PATH=build-dev/lib (tools/device_check.sh does this).
+# SEASPRING_DEVICE_TESTS=1: also builds the whole test suite and packs it, with everything ctest
+# needs there, into build-dev/tests.tar.xz for tools/device_test.sh (carry build-dev/tests.tar.xz).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-dev"
+tests=OFF
+[[ -n "${SEASPRING_DEVICE_TESTS:-}" ]] && tests=ON
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSEASPRING_CUDA=ON \
-  -DCMAKE_CUDA_ARCHITECTURES=90 -DSEASPRING_TESTS=OFF >/dev/null
-cmake --build "$build" -j "${SEASPRING_JOBS:-$(nproc)}" --target seaspring gencase
+  -DCMAKE_CUDA_ARCHITECTURES=90 -DSEASPRING_TESTS=$tests >/dev/null
+if [[ $tests == ON ]]; then
+  cmake --build "$build" -j "${SEASPRING_JOBS:-$(nproc)}"
+else
+  cmake --build "$build" -j "${SEASPRING_JOBS:-$(nproc)}" --target seaspring gencase
+fi
 mkdir -p "$build/lib"
-ldd "$build/bin/seaspring" "$build/bin/gencase" | awk '/=> \//{print $3}' | sort -u |
+ldd "$build"/bin/* | awk '/=> \//{print $3}' | sort -u |
   grep -v -E '/(libc|libm|libresolv|libpthread|libdl|librt)\.so' |
   while read -r lib; do cp -L -u "$lib" "$build/lib/"; done
 du -sh "$build/bin" "$build/lib"
@@ -26,3 +34,9 @@ cp "$root/../shared/dualsphysics-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" \
 # The reference data and DualSPHysics cases for tools/validate.py (SEASPRING_SHARED=build-dev/shared).
 mkdir -p "$build/shared"
 cp -r "$root/../shared/validation-data" "$root/../shared/dualsphysics-cases" "$build/shared/"
+if [[ $tests == ON ]]; then
+  # ctest's files hold absolute paths of this machine: device_test.sh recreates them there.
+  (cd "$build" && tar --exclude='*.o' --exclude='*.a' --exclude='*.tar.xz' --exclude='./validation' -cJf tests.tar.xz .)
+  echo "$root" >"$build/tests.root"
+  du -sh "$build/tests.tar.xz"
+fi

@@ -22,9 +22,9 @@ public:
     /// The pair loops take the host's batched form (physics::PairBatch): same bits, SIMD lanes.
     static constexpr bool kCompactPairs = true;
 
-    explicit HostExec(int threads) : threads_(threads > 0 ? threads : omp_get_max_threads()) {
-        omp_set_num_threads(threads_);
-    }
+    /// `threads` <= 0: OpenMP's default. Every parallel region names its thread count, so
+    /// engines of different thread counts can live in one process (the typed tests do).
+    explicit HostExec(int threads) : threads_(threads > 0 ? threads : omp_get_max_threads()) {}
     std::string name() const { return "cpu"; }
     std::string deviceName() const;
     int threads() const { return threads_; }
@@ -33,10 +33,10 @@ public:
     template <class Launch, class F>
     void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
         if constexpr (Launch::kCpuChunk == 0) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for num_threads(threads_) schedule(static)
             for (std::int64_t i = b; i < std::int64_t(e); ++i) f(std::uint32_t(i));
         } else {
-#pragma omp parallel for schedule(dynamic, Launch::kCpuChunk)
+#pragma omp parallel for num_threads(threads_) schedule(dynamic, Launch::kCpuChunk)
             for (std::int64_t i = b; i < std::int64_t(e); ++i) f(std::uint32_t(i));
         }
     }
@@ -47,7 +47,7 @@ public:
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
         T total = init;
-#pragma omp parallel
+#pragma omp parallel num_threads(threads_)
         {
             T local = init;
 #pragma omp for schedule(static) nowait
@@ -62,7 +62,7 @@ public:
     /// parallel region sharing each pass (`omp for`, whose implied barrier orders the passes).
     template <class Body>
     void sequence(std::uint64_t /*work*/, std::uint32_t /*widest*/, const Body& body) const {
-#pragma omp parallel
+#pragma omp parallel num_threads(threads_)
         {
             TeamRun run;
             body(run);
@@ -78,7 +78,7 @@ public:
         keys_alt.resize(keys.size());
         const std::uint32_t* p = perm.data();
         std::uint64_t* ka = keys_alt.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for num_threads(threads_) schedule(static)
         for (std::int64_t i = b; i < std::int64_t(e); ++i) ka[i] = k[p[i]];
         std::copy(keys_alt.begin() + b, keys_alt.begin() + e, keys.begin() + b);
     }

@@ -18,7 +18,8 @@
 ///      kHashed     enters the state hash, in table order, particle by particle (id order);
 ///      kHost       copied back to the host (HostState, id order) for outputs and reports;
 ///      kCheckpoint part of the state a restart needs;
-///      kHalo       read across a subdomain edge by a neighbour's pair loop (multi-GPU).
+///      kHalo       read across a subdomain edge by a neighbour's pair loop (multi-GPU);
+///      kScratch    the sort's scratch: meaningful only inside the range just sorted.
 ///    Fields without kSorted are rebuilt before they are read (PosCell by every divide, the
 ///    force-evaluation fields by every force evaluation, the sort scratch by the sort).
 #pragma once
@@ -36,6 +37,7 @@ enum FieldFlag : unsigned {
     kHost = 8u,
     kCheckpoint = 16u,
     kHalo = 32u,
+    kScratch = 64u,
 };
 
 /// The runs that allocate a field.
@@ -55,8 +57,8 @@ enum class FieldNeed { Always, Symplectic, Sps };
     X(visc,        float,                    Always,     0u)                                                \
     X(tau,         ::seaspring::physics::SymTensor, Sps,  kSorted | kCheckpoint | kHalo)                    \
     X(gradvel,     ::seaspring::physics::SymTensor, Sps,  0u)                                               \
-    X(keys,        std::uint64_t,            Always,     0u)                                                \
-    X(perm,        std::uint32_t,            Always,     0u)
+    X(keys,        std::uint64_t,            Always,     kScratch)                                                \
+    X(perm,        std::uint32_t,            Always,     kScratch)
 // clang-format on
 //  id          particle id (position in the case's id order)
 //  pos         position [m] (double)

@@ -130,6 +130,9 @@ public:
     /// Waits for queued device work (phase timers only; the CPU backend has none).
     virtual void synchronize() {}
     virtual void download(HostState& out) = 0;
+    /// Every allocated particle field except the sort scratch, in id order (tests compare
+    /// backends field by field after each phase).
+    virtual void downloadFields(HostParticles& out) = 0;
 };
 
 std::unique_ptr<Backend> makeCpuBackend(int threads);

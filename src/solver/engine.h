@@ -186,20 +186,26 @@ public:
     void synchronize() override { exec_.synchronize(); }
 
     void download(HostState& out) override {
+        downloadIdOrder(out, physics::kHost | physics::kHashed, 0u);
+        if (solid_.n > 0) solid_.download(out);
+    }
+    void downloadFields(HostParticles& out) override { downloadIdOrder(out, ~0u, physics::kScratch); }
+
+private:
+    /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
+    void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
         std::vector<std::uint32_t> ids;
         copyToHost(p_.id, ids);
         forEachFieldPair(p_, out, [&](auto& buf, auto& host, unsigned flags) {
-            if ((flags & (physics::kHost | physics::kHashed)) == 0) return;
+            if ((any != ~0u && (flags & any) == 0) || (flags & none) != 0 || buf.empty()) return;
             std::remove_reference_t<decltype(host)> sorted;
             copyToHost(buf, sorted);
             host.resize(sorted.size());
             for (std::size_t i = 0; i < sorted.size(); ++i) host[ids[i]] = sorted[i];
         });
-        if (solid_.n > 0) solid_.download(out);
     }
 
-private:
     ForceArgs forceArgs() {
         ForceArgs a;
         a.v = p_.view();

@@ -1,0 +1,284 @@
+// SeaSpring — MIT licence.
+/// \file test_backend_phases.cpp
+/// \brief One test body per backend (GoogleTest typed tests over the OpenMP backend with 2 and
+///        3 threads and the CUDA backend), each compared byte for byte with the OpenMP backend
+///        on 1 thread after every phase of a step: the sort (divide), the force evaluation (every
+///        particle field and the dt maxima), the integration (symplectic predictor/corrector,
+///        Verlet), moving boundaries, the VCPM solid sub-steps (snapshot, restore, ledger), the
+///        hydrodynamic force on the boundary, and the gauges. The CUDA instance skips, visibly,
+///        without a GPU; tools/device_test.sh runs it on one.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "solver/gauge_system.h"
+#include "solver/motion_player.h"
+#include "solver_test_util.h"
+
+using namespace seaspring;
+using solver::Backend;
+
+namespace {
+
+struct Cpu2 {
+    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(2); }
+};
+struct Cpu3 {
+    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(3); }
+};
+struct Gpu {
+    static std::unique_ptr<Backend> make(std::string& why) { return solver::makeCudaBackend(0, why); }
+};
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+/// Every particle field of the two backends, byte for byte; names the first that differs.
+void expectSameFields(Backend& ref, Backend& b, const std::string& phase) {
+    solver::HostParticles x, y;
+    ref.downloadFields(x);
+    b.downloadFields(y);
+    int differing = 0;
+    auto compare = [&](const char* name, const auto& u, const auto& v) {
+        if (!sameBytes(u, v)) {
+            ++differing;
+            ADD_FAILURE() << phase << ": field '" << name << "' differs from the 1-thread OpenMP backend";
+        }
+    };
+#define SEASPRING_COMPARE_FIELD(name, type, need, flags) compare(#name, x.name, y.name);
+    SEASPRING_PARTICLE_FIELDS(SEASPRING_COMPARE_FIELD)
+#undef SEASPRING_COMPARE_FIELD
+    EXPECT_EQ(differing, 0) << phase;
+    EXPECT_FALSE(x.pos.empty()) << phase << ": nothing was compared";
+}
+
+void expectSameMaxima(const physics::DtMaxima& a, const physics::DtMaxima& b, const std::string& phase) {
+    EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << phase << ": dt maxima differ";
+    EXPECT_GT(a.vel2 + a.ace2, 0.f) << phase << ": the maxima are trivially zero";
+}
+
+/// The solid arrays and the boundary force of the two backends, byte for byte.
+void expectSameSolidsAndForces(Backend& ref, Backend& b, const std::string& phase) {
+    solver::HostState x, y;
+    ref.download(x);
+    b.download(y);
+    EXPECT_TRUE(sameBytes(x.solid_vel, y.solid_vel)) << phase << ": solid velocities";
+    EXPECT_TRUE(sameBytes(x.solid_force, y.solid_force)) << phase << ": hydrodynamic force on the solid";
+    EXPECT_TRUE(sameBytes(x.bond_broken, y.bond_broken)) << phase << ": bond states";
+    EXPECT_TRUE(sameBytes(x.solid_impulse, y.solid_impulse)) << phase << ": ledger impulse";
+    EXPECT_TRUE(sameBytes(x.solid_work, y.solid_work)) << phase << ": ledger work";
+    std::vector<physics::Double3> fx, fy;
+    ref.boundaryForces(fx);
+    b.boundaryForces(fy);
+    EXPECT_TRUE(sameBytes(fx, fy)) << phase << ": force on the boundary particles";
+}
+
+/// A backend of the kind under test and the 1-thread reference, both set up from one case.
+template <class Kind>
+struct Pair {
+    std::unique_ptr<Backend> ref, b;
+    solver::BackendSetup setup;
+    solver::SolverCase kase;
+    bool ok = false;
+
+    Pair(const std::string& case_path, int cell_div, void (*tweak)(solver::SolverParameters&) = nullptr) {
+        std::string why;
+        b = Kind::make(why);
+        if (!b) {
+            skip_reason = why;
+            return;
+        }
+        kase = solver::loadSolverCase(case_path);
+        if (tweak) tweak(kase.params);
+        setup = solver::makeBackendSetup(kase, cell_div);
+        ref = solver::makeCpuBackend(1);
+        ref->init(setup);
+        b->init(setup);
+        ok = true;
+    }
+    std::string skip_reason;
+
+    std::vector<physics::RigidMotionGpu> motions(double t, double dt) const {
+        std::vector<physics::RigidMotionGpu> m(kase.motion.objects.size());
+        for (std::size_t o = 0; o < m.size(); ++o) {
+            const solver::RigidTransform a = solver::motionTransformAt(kase.motion.objects[o], t);
+            const solver::RigidTransform c = solver::motionTransformAt(kase.motion.objects[o], t + dt);
+            for (int r = 0; r < 3; ++r) {
+                for (int k = 0; k < 3; ++k) {
+                    m[o].r[3 * r + k] = a.r[r][k];
+                    m[o].r_next[3 * r + k] = c.r[r][k];
+                }
+                m[o].t[r] = a.t[r];
+                m[o].t_next[r] = c.t[r];
+            }
+            m[o].inv_dt = 1.0 / dt;
+        }
+        return m;
+    }
+    /// Calls f on both backends.
+    template <class F>
+    void both(F&& f) {
+        f(*ref);
+        f(*b);
+    }
+};
+
+template <class Kind>
+class BackendPhases : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string why;
+        if (!Kind::make(why)) GTEST_SKIP() << "no backend of this kind here: " << why;
+    }
+};
+
+using Kinds = ::testing::Types<Cpu2, Cpu3, Gpu>;
+TYPED_TEST_SUITE(BackendPhases, Kinds);
+
+/// A 2D tank with a moving piston (tests/solver/test_solver_parity.cpp's case).
+std::string pistonTank(const std::string& dir, const std::string& params) {
+    const std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTank2D_Def.xml");
+    return test::generateCase(dir, "piston", test::replaceOnce(xml, "<!--PARAMETERS-->", params));
+}
+
+/// Symplectic steps (predictor, divide keeping the step start, corrector, motion, divide),
+/// compared after each phase.
+template <class Kind>
+void symplecticSteps(Pair<Kind>& p, int steps, const std::string& tag) {
+    double t = 0, dt = 1e-4;
+    p.both([&](Backend& b) {
+        b.applyMotion(p.motions(0.0, dt));
+        b.divide(false);
+    });
+    expectSameFields(*p.ref, *p.b, tag + " sort");
+    for (int s = 0; s < steps; ++s) {
+        const std::string at = tag + " step " + std::to_string(s);
+        const physics::DtMaxima m0 = p.ref->computeForces(), m1 = p.b->computeForces();
+        expectSameMaxima(m0, m1, at + " forces (predictor)");
+        expectSameFields(*p.ref, *p.b, at + " forces (predictor)");
+        p.both([&](Backend& b) {
+            b.symplecticPredictor(dt);
+            b.divide(true);
+        });
+        expectSameFields(*p.ref, *p.b, at + " predictor + sort");
+        expectSameMaxima(p.ref->computeForces(), p.b->computeForces(), at + " forces (corrector)");
+        p.both([&](Backend& b) { b.symplecticCorrector(dt); });
+        expectSameFields(*p.ref, *p.b, at + " corrector");
+        t += dt;
+        p.both([&](Backend& b) {
+            b.applyMotion(p.motions(t, dt));
+            b.divide(false);
+        });
+        expectSameFields(*p.ref, *p.b, at + " motion + sort");
+        if (::testing::Test::HasFailure()) return;  // one report per phase is enough
+    }
+}
+
+}  // namespace
+
+TYPED_TEST(BackendPhases, SymplecticStepWithMovingBoundary2D) {
+    const std::string dir = test::scratch("phases_sym2d");
+    const std::string kase = pistonTank(
+        dir, R"(<parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
+    Pair<TypeParam> p(kase, 0);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    symplecticSteps(p, 3, "2D symplectic SPS DDT3");
+}
+
+TYPED_TEST(BackendPhases, VerletStepsCubicLaminar2D) {
+    const std::string dir = test::scratch("phases_verlet2d");
+    const std::string kase = pistonTank(
+        dir, R"(<parameter key="StepAlgorithm" value="1" /><parameter key="VerletSteps" value="2" /><parameter key="Kernel" value="1" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)");
+    Pair<TypeParam> p(kase, 0);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    const double dt = 1e-4;
+    p.both([&](Backend& b) {
+        b.applyMotion(p.motions(0.0, dt));
+        b.divide(false);
+    });
+    for (int s = 0; s < 4; ++s) {
+        const std::string at = "Verlet step " + std::to_string(s);
+        expectSameMaxima(p.ref->computeForces(), p.b->computeForces(), at + " forces");
+        p.both([&](Backend& b) { b.verletStep(dt, s % 2 == 1); });
+        expectSameFields(*p.ref, *p.b, at + " integration");
+        p.both([&](Backend& b) {
+            b.applyMotion(p.motions((s + 1) * dt, dt));
+            b.divide(false);
+        });
+        expectSameFields(*p.ref, *p.b, at + " motion + sort");
+    }
+}
+
+TYPED_TEST(BackendPhases, SymplecticStep3DCellsOfHalfH) {
+    const std::string dir = test::scratch("phases_db3d");
+    const std::string kase = test::generateCaseFile(dir, "db3d", test::caseDef("dambreak3d/DamBreak3D_Def.xml"), 0.03);
+    Pair<TypeParam> p(kase, 4);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    symplecticSteps(p, 2, "3D Wendland artificial");
+}
+
+TYPED_TEST(BackendPhases, SolidSubStepsCouplingAndBoundaryForces) {
+    const std::string dir = test::scratch("phases_plate");
+    const std::string kase =
+        test::generateCaseFile(dir, "plate", test::caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"), 0.025);
+    Pair<TypeParam> p(kase, 0);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    ASSERT_FALSE(p.setup.solid.empty());
+    const double dt = 2e-4;
+    p.both([&](Backend& b) { b.divide(false); });
+    for (int s = 0; s < 3; ++s) {
+        const std::string at = "coupled step " + std::to_string(s);
+        expectSameMaxima(p.ref->computeForces(), p.b->computeForces(), at + " forces");
+        p.both([&](Backend& b) {
+            b.solidHydroForces();
+            b.solidSave();
+            b.solidSteps(s * dt, 0.5 * dt / 7, 7, p.motions(s * dt, dt), false);  // a sub-cycle to undo
+        });
+        expectSameSolidsAndForces(*p.ref, *p.b, at + " sub-cycle to n+1/2");
+        p.both([&](Backend& b) {
+            b.solidRestore();
+            b.symplecticPredictor(dt);
+            b.divide(true);
+            b.computeForces();
+            b.solidHydroForces();
+            b.symplecticCorrector(dt);
+            b.solidSteps(s * dt, dt / 13, 13, p.motions(s * dt, dt), true);
+            b.divide(false);
+        });
+        expectSameFields(*p.ref, *p.b, at + " integration with the solid");
+        expectSameSolidsAndForces(*p.ref, *p.b, at + " solid sub-steps and ledger");
+    }
+}
+
+TYPED_TEST(BackendPhases, GaugesOnTheSortedState) {
+    const std::string dir = test::scratch("phases_gauges");
+    const std::string kase = test::generateCaseFile(
+        dir, "tank", std::string(SEASPRING_TEST_DATA_DIR) + "/gauges/StillTank_Def.xml");
+    Pair<TypeParam> p(kase, 0);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    std::ostringstream log;
+    solver::GaugeSystem gauges(p.kase, p.setup, dir + "/out", log);
+    p.both([&](Backend& b) {
+        gauges.attach(b);
+        b.divide(false);
+        for (int s = 0; s < 5; ++s) {
+            b.computeForces();
+            b.verletStep(1e-4, false);
+            b.divide(false);
+        }
+    });
+    solver::GaugeResults x, y;
+    p.ref->gauges(x);
+    p.b->gauges(y);
+    ASSERT_FALSE(x.samples.empty());
+    ASSERT_FALSE(x.maxz.empty());
+    EXPECT_TRUE(sameBytes(x.samples, y.samples)) << "kernel sums at the gauge points";
+    EXPECT_TRUE(sameBytes(x.maxz, y.maxz)) << "maxz rows";
+    EXPECT_TRUE(sameBytes(x.positions, y.positions)) << "gauge particle positions";
+}
