@@ -4,6 +4,12 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
 
 namespace seaspring::solver {
 
@@ -22,13 +28,19 @@ void mix(std::uint64_t& h, const void* data, std::size_t n) {
 
 std::uint64_t stateHash(const HostState& s) {
     std::uint64_t h = kFnvOffset;
-    for (std::size_t i = 0; i < s.pos.size(); ++i) {
-        const double p[3] = {s.pos[i].x, s.pos[i].y, s.pos[i].z};
-        const float v[4] = {s.velrho[i].x, s.velrho[i].y, s.velrho[i].z, s.velrho[i].w};
-        mix(h, p, sizeof p);
-        mix(h, v, sizeof v);
-        mix(h, &s.excl[i], 1);
-    }
+    // The fields flagged kHashed in the field table (physics/particle_fields.h), in table
+    // order, particle after particle (id order).
+    std::vector<std::pair<const unsigned char*, std::size_t>> fields;  // (bytes, bytes per particle)
+    std::size_t np = s.pos.size();
+    s.forEachField([&](const auto& v, unsigned flags) {
+        if ((flags & physics::kHashed) == 0) return;
+        using T = typename std::decay_t<decltype(v)>::value_type;
+        if (v.size() != np) throw Error("stateHash: a hashed field has " + std::to_string(v.size()) +
+                                        " values for " + std::to_string(np) + " particles");
+        fields.emplace_back(reinterpret_cast<const unsigned char*>(v.data()), sizeof(T));
+    });
+    for (std::size_t i = 0; i < np; ++i)
+        for (const auto& f : fields) mix(h, f.first + i * f.second, f.second);
     // VCPM solids (absent without solids, so fluid-only hashes are unchanged): the
     // double-precision velocities and every bond's state.
     for (const physics::Double3& v : s.solid_vel) {

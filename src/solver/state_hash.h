@@ -1,6 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file state_hash.h
-/// \brief The run's state hash: 64-bit FNV-1a over every particle in id order (position as
+/// \brief The run's state hash: 64-bit FNV-1a over every particle in id order (the fields flagged
+///        physics::kHashed in the field table: position as
 ///        double, velocity and density as float, exclusion reason), printed at the end of
 ///        every run; equal hashes mean bit-identical states.
 #pragma once
