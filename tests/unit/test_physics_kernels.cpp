@@ -1,13 +1,17 @@
 // SeaSpring — MIT licence.
 /// \file test_physics_kernels.cpp
 /// \brief Kernel normalisation and gradients (2D, 3D, Wendland, cubic), the Tait EOS, the
-///        seventh root and the DDT hydrostatic term against hand values.
+///        seventh root and the DDT hydrostatic term against hand values; a pair's acceleration
+///        alone (addPairAcceleration from -0) equals the plain products bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "physics/density_diffusion.h"
 #include "physics/eos_tait.h"
+#include "physics/fluid_pair_terms.h"
 #include "physics/sph_kernels.h"
 #include "physics/viscosity.h"
 
@@ -146,4 +150,63 @@ TEST(Viscosity, SpsTauOfPureShear) {
     const SymTensor t = spsTau(gv, 1000.f, 1e-6f, 1e-7f);
     EXPECT_NEAR(t.xy, 1e-6 * 2.0 * 2.0 / 1000.0, 1e-12);
     EXPECT_NEAR(t.xx, -(1e-7 * 4.0) / 1000.0, 1e-13);
+}
+
+namespace {
+
+std::uint32_t bitsOf(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+/// The reaction on a boundary particle as it was computed before addPairAcceleration: the plain
+/// products cf grad W, then the fused laminar term, then the SPS term.
+template <class Opt>
+void plainPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
+    ax = t.cf * t.frx;
+    ay = t.cf * t.fry;
+    az = t.cf * t.frz;
+    if (Opt::visco != Viscosity::Artificial) {
+        ax = fma32(t.cv, t.dvx, ax);
+        ay = fma32(t.cv, t.dvy, ay);
+        az = fma32(t.cv, t.dvz, az);
+        if (Opt::sps) {
+            ax += t.sx;
+            ay += t.sy;
+            az += t.sz;
+        }
+    }
+}
+
+template <class Opt>
+void checkAccelerationFromMinusZero() {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-2.f, 2.f);
+    const float zeros[] = {0.f, -0.f};
+    int zero_products = 0;
+    for (int n = 0; n < 20000; ++n) {
+        PairTerms t{};
+        // Zero factors of either sign (a product of +-0 keeps its sign only without an addend).
+        auto pick = [&](int k) { return (n >> k) % 7 == 0 ? zeros[(n >> (k + 3)) & 1] : u(rng); };
+        t.frx = pick(0), t.fry = pick(1), t.frz = pick(2), t.cf = pick(3);
+        t.cv = pick(4), t.dvx = pick(5), t.dvy = pick(6), t.dvz = u(rng);
+        t.sx = u(rng), t.sy = u(rng), t.sz = u(rng);
+        float ax = -0.f, ay = -0.f, az = -0.f, px, py, pz;
+        addPairAcceleration<Opt>(t, ax, ay, az);
+        plainPairAcceleration<Opt>(t, px, py, pz);
+        ASSERT_EQ(bitsOf(ax), bitsOf(px)) << n;
+        ASSERT_EQ(bitsOf(ay), bitsOf(py)) << n;
+        ASSERT_EQ(bitsOf(az), bitsOf(pz)) << n;
+        zero_products += t.cf * t.frx == 0.f ? 1 : 0;
+    }
+    EXPECT_GT(zero_products, 1000);  // signed zero products were exercised
+}
+
+}  // namespace
+
+TEST(PairAcceleration, FromMinusZeroEqualsThePlainProducts) {
+    checkAccelerationFromMinusZero<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::None, 3>>();
+    checkAccelerationFromMinusZero<FluidOptions<WendlandKernel, Viscosity::Laminar, DensityDiffusion::None, 3>>();
+    checkAccelerationFromMinusZero<FluidOptions<CubicKernel, Viscosity::LaminarSps, DensityDiffusion::None, 2>>();
 }
