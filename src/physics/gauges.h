@@ -65,6 +65,10 @@ SEASPRING_HD inline double shepard(double sum, double wsum, double kclimit) {
     return wsum >= kclimit && wsum > 0.0 ? sum / wsum : 0.0;
 }
 
+/// The SWL gauge's default mass limit, as a fraction of the fluid particle mass (JGaugeSwl:
+/// 0.5 in 3D, 0.4 in 2D; <masslimit coef=> overrides it).
+inline double swlMassLimitCoef(int dim) { return dim == 3 ? 0.5 : 0.4; }
+
 /// The free surface along the line point0 + k dir, k = 0..n-1, from the SWL masses there
 /// (JGaugeSwl): the first point below masslimit that follows one above it, moved back towards
 /// that one by linear interpolation. No crossing: the last point when every point was above
