@@ -6,9 +6,10 @@
 /// Both backends call these functions per particle over the same cell-sorted arrays (the CPU
 /// from an OpenMP loop, the GPU one thread per particle), so neighbours are visited in the
 /// same order and sums are formed in the same order: results are bit-identical.
-/// Neighbour order: all fluid-block rows, then all boundary-block rows; rows by z then y
-/// (ascending); inside a row, the contiguous particle range of its cells (sorted by cell,
-/// then id). Gather only: each particle writes its own results.
+/// Neighbour order: all fluid-block rows, then all boundary-block rows, each block in the
+/// order of forEachCandidateRow (neighbour_rows.h): rows by z then y (ascending); inside a row,
+/// the contiguous particle range of its cells (sorted by cell, then id). Gather only: each
+/// particle writes its own results.
 #pragma once
 
 #include <cstdint>
@@ -19,14 +20,13 @@
 namespace seaspring::physics {
 
 
-/// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound): the
-/// direct loop (the GPU's path).
+/// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound), `par`
+/// and `cax` as forEachCandidateRow gives them: the direct loop (the GPU's path).
 template <class Opt, bool kBound>
-SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, const Float4& psa, int cax,
-                                         float rowdy, float rowdz, const Float4& va, float ovrhoa,
-                                         float pressa, const SymTensor& taua, const InteractionInputs& in,
-                                         const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
-    const Float4 par = rowFrame(psa, rowdy, rowdz);
+SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax,
+                                         const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+                                         const InteractionInputs& in, const FluidConstants& c,
+                                         const CellGrid& g, FluidAccum& acc) {
     for (std::uint32_t j = pb; j < pe; ++j) {
         float drx, dry, drz;
         const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
@@ -68,11 +68,9 @@ struct PairBatch {
         m = 0;
     }
 
-    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, const Float4& psa, int cax, float rowdy,
-                             float rowdz, const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
-                             const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
-                             FluidAccum& acc) {
-        const Float4 par = rowFrame(psa, rowdy, rowdz);
+    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax, const Float4& va,
+                             float ovrhoa, float pressa, const SymTensor& taua, const InteractionInputs& in,
+                             const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
             for (int k = 0; k < take; ++k) {
@@ -87,30 +85,21 @@ struct PairBatch {
     }
 };
 
-/// Visits the rows of cells around `psa`'s cell that can hold a neighbour (by z then y,
-/// ascending) in one block (`cell_start` of that block).
+/// The pairs of `psa` with the candidates of one block (`cell_start` of that block), row by row
+/// (forEachCandidateRow).
 template <class Opt, bool kBound, bool kCompact>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
                                            const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
-    const SearchBox box = searchBox<Opt::dim>(psa, g);
-    const int cax = box.cax;
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float rowdz = g.cellsizef * float(box.caz - z);
-        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
-        for (int y = box.y0; y <= box.y1; ++y) {
-            std::uint32_t pb, pe;
-            if (!rowCandidates<Opt::dim>(box, psa, y, z, gz, cell_start, c, g, pb, pe)) continue;
-            const float rowdy = g.cellsizef * float(box.cay - y);
-            if constexpr (kCompact)
-                batch.addRow(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua, in, c, g, acc);
-            else
-                fluidPairsInRow<Opt, kBound>(pb, pe, psa, cax, rowdy, rowdz, va, ovrhoa, pressa, taua, in, c, g, acc);
-        }
-    }
+    forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
+        if constexpr (kCompact)
+            batch.addRow(pb, pe, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+        else
+            fluidPairsInRow<Opt, kBound>(pb, pe, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+    });
     if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
 }
 
@@ -155,7 +144,7 @@ SEASPRING_HD inline void boundPair(std::uint32_t j, float drx, float dry, float 
 
 /// Force evaluation of DBC boundary particle `i`: continuity with fluid neighbours and the
 /// viscous dt measure (boundary particles feel no force: their motion is prescribed).
-/// The row walk is fluidPairsInBlock's; kCompact: branch-free selection (as PairBatch).
+/// The row walk is forEachCandidateRow's; kCompact: branch-free selection (as PairBatch).
 template <class Opt, bool kCompact = false>
 SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionInputs& in,
                                              const FluidConstants& c, const CellGrid& g,
@@ -163,42 +152,35 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
     float ar = 0.f, visc = 0.f;
-    const SearchBox box = searchBox<Opt::dim>(psa, g);
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float rowdz = g.cellsizef * float(box.caz - z);
-        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
-        for (int y = box.y0; y <= box.y1; ++y) {
-            std::uint32_t pb, pe;
-            if (!rowCandidates<Opt::dim>(box, psa, y, z, gz, in.cell_start_fluid, c, g, pb, pe)) continue;
-            const Float4 par = rowFrame(psa, g.cellsizef * float(box.cay - y), rowdz);
-            if constexpr (!kCompact) {
-                for (std::uint32_t j = pb; j < pe; ++j) {
+    forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, [&](std::uint32_t pb, std::uint32_t pe,
+                                                                     const Float4& par, int cax) {
+        if constexpr (!kCompact) {
+            for (std::uint32_t j = pb; j < pe; ++j) {
+                float drx, dry, drz;
+                const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
+                if (!isNeighbour(rr2, c)) continue;
+                boundPair<Opt>(j, drx, dry, drz, rr2, va, in, c, ar, visc);
+            }
+        } else {
+            std::uint32_t idx[kCandidateChunk];
+            float bx[kCandidateChunk], by[kCandidateChunk], bz[kCandidateChunk], br[kCandidateChunk];
+            for (std::uint32_t j0 = pb; j0 < pe; j0 += kCandidateChunk) {
+                const std::uint32_t je = pe - j0 > std::uint32_t(kCandidateChunk) ? j0 + kCandidateChunk : pe;
+                int n = 0;
+                for (std::uint32_t j = j0; j < je; ++j) {
                     float drx, dry, drz;
-                    const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], box.cax, g, drx, dry, drz);
-                    if (!isNeighbour(rr2, c)) continue;
-                    boundPair<Opt>(j, drx, dry, drz, rr2, va, in, c, ar, visc);
+                    const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
+                    idx[n] = j;
+                    bx[n] = drx;
+                    by[n] = dry;
+                    bz[n] = drz;
+                    br[n] = rr2;
+                    n += isNeighbour(rr2, c) ? 1 : 0;
                 }
-            } else {
-                std::uint32_t idx[kCandidateChunk];
-                float bx[kCandidateChunk], by[kCandidateChunk], bz[kCandidateChunk], br[kCandidateChunk];
-                for (std::uint32_t j0 = pb; j0 < pe; j0 += kCandidateChunk) {
-                    const std::uint32_t je = pe - j0 > std::uint32_t(kCandidateChunk) ? j0 + kCandidateChunk : pe;
-                    int n = 0;
-                    for (std::uint32_t j = j0; j < je; ++j) {
-                        float drx, dry, drz;
-                        const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], box.cax, g, drx, dry, drz);
-                        idx[n] = j;
-                        bx[n] = drx;
-                        by[n] = dry;
-                        bz[n] = drz;
-                        br[n] = rr2;
-                        n += isNeighbour(rr2, c) ? 1 : 0;
-                    }
-                    for (int k = 0; k < n; ++k) boundPair<Opt>(idx[k], bx[k], by[k], bz[k], br[k], va, in, c, ar, visc);
-                }
+                for (int k = 0; k < n; ++k) boundPair<Opt>(idx[k], bx[k], by[k], bz[k], br[k], va, in, c, ar, visc);
             }
         }
-    }
+    });
     ar_out = ar;
     visc_out = visc;
 }

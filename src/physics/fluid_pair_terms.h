@@ -1,10 +1,10 @@
 // SeaSpring — MIT licence.
 /// \file fluid_pair_terms.h
 /// \brief What every fluid pair interaction is made of, on both backends: the read-only
-///        inputs, the search box and row candidates of the neighbour search, the pair offset
-///        and neighbour test, and the terms of one pair (pressure, viscosity, continuity,
-///        density diffusion, SPS, viscous dt) and their sum. The loops over neighbours that
-///        call them are in fluid_interaction.h.
+///        inputs, the terms of one pair (pressure, viscosity, continuity, density diffusion,
+///        SPS, viscous dt), the pair's acceleration and their sum. The neighbour search (rows,
+///        candidates, pair offset, neighbour test) is neighbour_rows.h; the loops over
+///        neighbours that call these are in fluid_interaction.h and solid_coupling.h.
 #pragma once
 
 #include <cstdint>
@@ -13,13 +13,11 @@
 #include "physics/cell_grid.h"
 #include "physics/eos_tait.h"
 #include "physics/fluid_constants.h"
+#include "physics/neighbour_rows.h"
 #include "physics/particle_updates.h"
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
-
-/// Safety margin of the row spans, in cells: absorbs the rounding of the span arithmetic.
-constexpr float kRowSpanMargin = 1e-3f;
 
 /// Read-only inputs of the interaction (sorted order).
 struct InteractionInputs {
@@ -49,28 +47,6 @@ struct FluidAccum {
     bool ddt_off = false;          ///< DensityDT 1/2: a boundary neighbour switches DDT off
     SymTensor gradvel{0, 0, 0, 0, 0, 0};  ///< SPS velocity gradient sums
 };
-
-/// Particle a's cell offsets moved into the frame of one row of cells: y + rowdy, z + rowdz,
-/// rowdy/rowdz = cellsize * (a's cell - the row's cell) in y/z. Computed once per row.
-SEASPRING_HD inline Float4 rowFrame(const Float4& psa, float rowdy, float rowdz) {
-    return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
-}
-
-/// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
-/// rowFrame for that row.
-template <int kDim>
-SEASPRING_HD inline float pairOffset(const Float4& par, const Float4& psb, int cax, const CellGrid& g,
-                                     float& drx, float& dry, float& drz) {
-    drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), par.x - psb.x);
-    dry = kDim == 3 ? par.y - psb.y : 0.f;
-    drz = par.z - psb.z;
-    return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
-}
-
-/// The exact neighbour test of a pair (inside the kernel support, not the particle itself).
-SEASPRING_HD inline bool isNeighbour(float rr2, const FluidConstants& c) {
-    return rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero;
-}
 
 /// What pair (a, b) adds to fluid particle a, before it is summed (addPairTerms).
 struct PairTerms {
@@ -155,25 +131,35 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     return t;
 }
 
+/// Adds the acceleration of one pair to (ax, ay, az): cf grad W (pressure, artificial
+/// viscosity), + cv v_ab (laminar viscosity), + the SPS stress term; the one source of the
+/// momentum contribution of a pair, for the fluid particle's sum (addPairTerms) and for the
+/// reaction on a boundary particle (hydroForceOnBoundary). Starting from -0.f gives the pair's
+/// acceleration alone, bit for bit: fma32(a, b, -0.f) = round(a b), the sign of zero included.
+template <class Opt>
+SEASPRING_HD inline void addPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
+    ax = fma32(t.cf, t.frx, ax);
+    ay = fma32(t.cf, t.fry, ay);
+    az = fma32(t.cf, t.frz, az);
+    if (Opt::visco != Viscosity::Artificial) {
+        ax = fma32(t.cv, t.dvx, ax);
+        ay = fma32(t.cv, t.dvy, ay);
+        az = fma32(t.cv, t.dvz, az);
+        if (Opt::sps) {
+            ax += t.sx;
+            ay += t.sy;
+            az += t.sz;
+        }
+    }
+}
+
 /// Adds one pair's terms to particle a's sums (in neighbour order on every backend).
 template <class Opt, bool kBound>
 SEASPRING_HD inline void addPairTerms(FluidAccum& acc, const PairTerms& t) {
-    acc.ax = fma32(t.cf, t.frx, acc.ax);
-    acc.ay = fma32(t.cf, t.fry, acc.ay);
-    acc.az = fma32(t.cf, t.frz, acc.az);
-    if (Opt::visco != Viscosity::Artificial) {
-        acc.ax = fma32(t.cv, t.dvx, acc.ax);
-        acc.ay = fma32(t.cv, t.dvy, acc.ay);
-        acc.az = fma32(t.cv, t.dvz, acc.az);
-        if (Opt::sps) {
-            acc.ax += t.sx;
-            acc.ay += t.sy;
-            acc.az += t.sz;
-            if (!kBound) {
-                acc.gradvel.xx += t.gv.xx; acc.gradvel.xy += t.gv.xy; acc.gradvel.xz += t.gv.xz;
-                acc.gradvel.yy += t.gv.yy; acc.gradvel.yz += t.gv.yz; acc.gradvel.zz += t.gv.zz;
-            }
-        }
+    addPairAcceleration<Opt>(t, acc.ax, acc.ay, acc.az);
+    if (Opt::sps && !kBound) {
+        acc.gradvel.xx += t.gv.xx; acc.gradvel.xy += t.gv.xy; acc.gradvel.xz += t.gv.xz;
+        acc.gradvel.yy += t.gv.yy; acc.gradvel.yz += t.gv.yz; acc.gradvel.zz += t.gv.zz;
     }
     acc.ar += t.ar;
     acc.visc = maxf(acc.visc, t.visc);
@@ -188,43 +174,6 @@ SEASPRING_HD inline void fluidPair(std::uint32_t j, float drx, float dry, float 
                                    const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                                    const InteractionInputs& in, const FluidConstants& c, FluidAccum& acc) {
     addPairTerms<Opt, kBound>(acc, fluidPairTerms<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c));
-}
-
-/// The cells around a particle's cell that its neighbour search visits: rows y0..y1, z0..z1
-/// (2D: y0 = y1 = 0) of at most 2 range + 1 cells each.
-struct SearchBox {
-    int cax, cay, caz, y0, y1, z0, z1;
-    float margin;  ///< rowSpan's safety margin [m]
-};
-
-template <int kDim>
-SEASPRING_HD inline SearchBox searchBox(const Float4& psa, const CellGrid& g) {
-    SearchBox b;
-    b.cax = packedCellX(g, psa.w);
-    b.cay = kDim == 3 ? packedCellY(g, psa.w) : 0;
-    b.caz = packedCellZ(g, psa.w);
-    b.y0 = kDim == 3 ? maxi(b.cay - g.range, 0) : 0;
-    b.y1 = kDim == 3 ? mini(b.cay + g.range, g.ncy - 1) : 0;
-    b.z0 = maxi(b.caz - g.range, 0);
-    b.z1 = mini(b.caz + g.range, g.ncz - 1);
-    b.margin = kRowSpanMargin * g.cellsizef;
-    return b;
-}
-
-/// Candidates [pb, pe) of row (y, z) in the block whose first indices per cell are
-/// `cell_start`: the cells of the row in reach of `psa` (rowSpan). `gz` = the row's gap in z
-/// (cellGap, once per z). False when the row is out of reach.
-template <int kDim>
-SEASPRING_HD inline bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
-                                       const std::uint32_t* cell_start, const FluidConstants& c,
-                                       const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
-    const float gy = kDim == 3 ? cellGap(y - b.cay, psa.y, g.cellsizef, b.margin) : 0.f;
-    int x0, x1;
-    if (!rowSpan(g, b.cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, b.margin, x0, x1)) return false;
-    const std::uint32_t row = g.linear(0, y, z);
-    pb = cell_start[row + std::uint32_t(x0)];
-    pe = cell_start[row + std::uint32_t(x1) + 1u];
-    return true;
 }
 
 }  // namespace seaspring::physics

@@ -12,8 +12,8 @@
 ///   - the highest fluid particle within distlimit (horizontally) of a vertical line (JGaugeMaxZ).
 /// Unlike DualSPHysics' gauges, a particle exactly at the point counts (it carries the largest
 /// weight; only a particle's pair with itself is excluded in the force loops).
-/// Sums run in the neighbour order of the force loops (rows by z then y, cells sorted by cell
-/// then id) and accumulate in double, so both backends give the same bits.
+/// Sums run in the neighbour order of the force loops (forEachCandidateRow: rows by z then y,
+/// cells sorted by cell then id) and accumulate in double, so both backends give the same bits.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@
 #include "physics/cell_grid.h"
 #include "physics/eos_tait.h"
 #include "physics/fluid_constants.h"
-#include "physics/fluid_interaction.h"
+#include "physics/neighbour_rows.h"
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
@@ -41,29 +41,22 @@ SEASPRING_HD inline GaugeSample gaugeSampleAt(const Float4& pt, const std::uint3
                                               const Float4* poscell, const Float4* velrho,
                                               const FluidConstants& c, const CellGrid& g) {
     GaugeSample s;
-    const SearchBox box = searchBox<kDim>(pt, g);
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float rowdz = g.cellsizef * float(box.caz - z);
-        const float gz = cellGap(z - box.caz, pt.z, g.cellsizef, box.margin);
-        for (int y = box.y0; y <= box.y1; ++y) {
-            std::uint32_t pb, pe;
-            if (!rowCandidates<kDim>(box, pt, y, z, gz, cell_start_fluid, c, g, pb, pe)) continue;
-            const Float4 par = rowFrame(pt, g.cellsizef * float(box.cay - y), rowdz);
-            for (std::uint32_t j = pb; j < pe; ++j) {
-                float drx, dry, drz;
-                const float rr2 = pairOffset<kDim>(par, poscell[j], box.cax, g, drx, dry, drz);
-                if (!(rr2 <= c.ker.kernelsize2)) continue;  // r = 0 counts (not a self-pair)
-                const Float4 vj = velrho[j];
-                const double w = double(Kernel::value(rr2, c.ker)) * (double(c.massfluid) / double(vj.w));
-                s.wsum += w;
-                s.mass += w * double(c.massfluid);
-                s.vx += w * double(vj.x);
-                s.vy += w * double(vj.y);
-                s.vz += w * double(vj.z);
-                s.press += w * double(taitPressure7(vj.w, c.cteb, c.ovrhop0));
-            }
+    forEachCandidateRow<kDim>(pt, cell_start_fluid, c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par,
+                                                              int cax) {
+        for (std::uint32_t j = pb; j < pe; ++j) {
+            float drx, dry, drz;
+            const float rr2 = pairOffset<kDim>(par, poscell[j], cax, g, drx, dry, drz);
+            if (!(rr2 <= c.ker.kernelsize2)) continue;  // r = 0 counts (not a self-pair)
+            const Float4 vj = velrho[j];
+            const double w = double(Kernel::value(rr2, c.ker)) * (double(c.massfluid) / double(vj.w));
+            s.wsum += w;
+            s.mass += w * double(c.massfluid);
+            s.vx += w * double(vj.x);
+            s.vy += w * double(vj.y);
+            s.vz += w * double(vj.z);
+            s.press += w * double(taitPressure7(vj.w, c.cteb, c.ovrhop0));
         }
-    }
+    });
     return s;
 }
 
@@ -71,6 +64,10 @@ SEASPRING_HD inline GaugeSample gaugeSampleAt(const Float4& pt, const std::uint3
 SEASPRING_HD inline double shepard(double sum, double wsum, double kclimit) {
     return wsum >= kclimit && wsum > 0.0 ? sum / wsum : 0.0;
 }
+
+/// The SWL gauge's default mass limit, as a fraction of the fluid particle mass (JGaugeSwl:
+/// 0.5 in 3D, 0.4 in 2D; <masslimit coef=> overrides it).
+inline double swlMassLimitCoef(int dim) { return dim == 3 ? 0.5 : 0.4; }
 
 /// The free surface along the line point0 + k dir, k = 0..n-1, from the SWL masses there
 /// (JGaugeSwl): the first point below masslimit that follows one above it, moved back towards

@@ -24,46 +24,32 @@ template <class Opt>
 SEASPRING_HD inline Double3 hydroForceOnBoundary(std::uint32_t i, const InteractionInputs& in,
                                                  const FluidConstants& c, const CellGrid& g) {
     const Float4 psb = in.poscell[i];
-    const SearchBox box = searchBox<Opt::dim>(psb, g);
     const int cby = Opt::dim == 3 ? packedCellY(g, psb.w) : 0;
     const int cbz = packedCellZ(g, psb.w);
     double fx = 0.0, fy = 0.0, fz = 0.0;
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float gz = cellGap(z - box.caz, psb.z, g.cellsizef, box.margin);
-        for (int y = box.y0; y <= box.y1; ++y) {
-            std::uint32_t pb, pe;
-            if (!rowCandidates<Opt::dim>(box, psb, y, z, gz, in.cell_start_fluid, c, g, pb, pe)) continue;
-            for (std::uint32_t j = pb; j < pe; ++j) {
-                const Float4 psa = in.poscell[j];
-                // Fluid particle j's frame for the row holding i: as in fluidPairsInBlock.
-                const int caxj = packedCellX(g, psa.w);
-                const float rowdy = Opt::dim == 3 ? g.cellsizef * float(packedCellY(g, psa.w) - cby) : 0.f;
-                const float rowdz = g.cellsizef * float(packedCellZ(g, psa.w) - cbz);
-                float drx, dry, drz;
-                const float rr2 = pairOffset<Opt::dim>(rowFrame(psa, rowdy, rowdz), psb, caxj, g, drx, dry, drz);
-                if (!isNeighbour(rr2, c)) continue;
-                const Float4 va = in.velrho[j];
-                const Float2 pa2 = in.press_ovrho[j];
-                SymTensor taua{0, 0, 0, 0, 0, 0};
-                if (Opt::sps) taua = in.tau[j];
-                const PairTerms t = fluidPairTerms<Opt, true>(i, drx, dry, drz, rr2, va, pa2.y, pa2.x, taua, in, c);
-                float ax = t.cf * t.frx, ay = t.cf * t.fry, az = t.cf * t.frz;
-                if (Opt::visco != Viscosity::Artificial) {
-                    ax = fma32(t.cv, t.dvx, ax);
-                    ay = fma32(t.cv, t.dvy, ay);
-                    az = fma32(t.cv, t.dvz, az);
-                    if (Opt::sps) {
-                        ax += t.sx;
-                        ay += t.sy;
-                        az += t.sz;
-                    }
-                }
-                fx -= double(ax);
-                fy -= double(ay);
-                fz -= double(az);
-            }
+    forEachCandidateRow<Opt::dim>(psb, in.cell_start_fluid, c, g, [&](std::uint32_t pb, std::uint32_t pe,
+                                                                      const Float4&, int) {
+        for (std::uint32_t j = pb; j < pe; ++j) {
+            const Float4 psa = in.poscell[j];
+            // Fluid particle j's frame for the row holding i: as forEachCandidateRow gives it to j.
+            const int caxj = packedCellX(g, psa.w);
+            const float rowdy = Opt::dim == 3 ? g.cellsizef * float(packedCellY(g, psa.w) - cby) : 0.f;
+            const float rowdz = g.cellsizef * float(packedCellZ(g, psa.w) - cbz);
+            float drx, dry, drz;
+            const float rr2 = pairOffset<Opt::dim>(rowFrame(psa, rowdy, rowdz), psb, caxj, g, drx, dry, drz);
+            if (!isNeighbour(rr2, c)) continue;
+            const Float4 va = in.velrho[j];
+            const Float2 pa2 = in.press_ovrho[j];
+            SymTensor taua{0, 0, 0, 0, 0, 0};
+            if (Opt::sps) taua = in.tau[j];
+            const PairTerms t = fluidPairTerms<Opt, true>(i, drx, dry, drz, rr2, va, pa2.y, pa2.x, taua, in, c);
+            float ax = -0.f, ay = -0.f, az = -0.f;  // the pair's acceleration alone (addPairAcceleration)
+            addPairAcceleration<Opt>(t, ax, ay, az);
+            fx -= double(ax);
+            fy -= double(ay);
+            fz -= double(az);
         }
-    }
+    });
     const double m = double(c.massfluid);
     return Double3{m * fx, m * fy, m * fz};
 }

@@ -65,6 +65,14 @@ inline VcpmElastic vcpmElastic(double young, double poisson, double density) {
     return e;
 }
 
+/// Mass of a solid particle, rho_S dp^D [kg] (2D: per m of thickness).
+inline double vcpmParticleMass(int dim, double density, double dp) {
+    return density * dp * dp * (dim == 3 ? dp : 1.0);
+}
+
+/// The solid sub-step of a material [s]: VcpmDtCoef dp / c_S (c_S: VcpmElastic::wave_speed).
+inline double vcpmTimeStep(double dt_coef, double dp, double wave_speed) { return dt_coef * dp / wave_speed; }
+
 /// Host: the constants of a body of density rho, Young's modulus E, Poisson's ratio nu on a
 /// lattice of spacing dp (dim 2 or 3); `damping` multiplies sqrt(E/(rho dp^2)).
 inline VcpmMaterial vcpmMaterial(int dim, double young, double poisson, double density, double dp,
@@ -77,13 +85,12 @@ inline VcpmMaterial vcpmMaterial(int dim, double young, double poisson, double d
         m.k_first = 2.0 * r * young / (1.0 + poisson);
         m.k_second = m.k_first;
         m.t_half = 0.5 * r * young * (4.0 * poisson - 1.0) / ((9.0 + 4.0 * sqrt2) * denom);
-        m.inv_mass = 1.0 / (density * dp * dp * dp);
     } else {
         m.k_first = 2.0 * young / (1.0 + poisson);
         m.k_second = young / (1.0 + poisson);
         m.t_half = 0.5 * young * (4.0 * poisson - 1.0) / (2.0 * (3.0 + 2.0 * sqrt2) * denom);
-        m.inv_mass = 1.0 / (density * dp * dp);
     }
+    m.inv_mass = 1.0 / vcpmParticleMass(dim, density, dp);
     m.damp_rate = damping * std::sqrt(young / (density * dp * dp));
     m.crit_stretch = crit_stretch;
     return m;
@@ -138,6 +145,25 @@ SEASPRING_HD inline double halfElongation(double len, double rest) { return 0.5 
 SEASPRING_HD inline bool bondBreaks(double len, double rest, double crit) {
     return crit > 0.0 && len - rest > crit * rest;
 }
+
+/// Normal stiffness k_IJ of a bond from its VcpmBondFlag bits.
+SEASPRING_HD inline double bondStiffness(const VcpmMaterial& m, std::uint8_t flags) {
+    return (flags & kBondSecond) ? m.k_second : m.k_first;
+}
+
+/// Engineering strain of a bond, (|r| - L0) / L0 (output field).
+SEASPRING_HD inline double bondStrain(double len, double rest) { return (len - rest) / rest; }
+
+/// Spring energy of an intact bond seen from one of its particles: 1/2 k dl^2 (the lattice
+/// energy U of the file brief sums it from both ends). A clamp bond is seen from its solid end
+/// only, so `clamp` counts both halves: k dl^2.
+SEASPRING_HD inline double bondSpringEnergy(double k, double dl, bool clamp) {
+    return 0.5 * k * dl * dl * (clamp ? 2.0 : 1.0);
+}
+
+/// Volumetric energy of one lattice site (solid particle or clamp node) with sum S over its
+/// intact bonds: 1/2 T S^2 = t_half S^2.
+SEASPRING_HD inline double siteVolumetricEnergy(double t_half, double sum) { return t_half * sum * sum; }
 
 /// Magnitude of the force on I along u_IJ (Eq. 13).
 SEASPRING_HD inline double bondForce(double k, double t_half, double dl, double sum_i, double sum_j) {
@@ -231,8 +257,7 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
         const double sum_j = clamp ? cn.sum[j] : st.sum[j];
         double dx, dy, dz;
         const double len = bondVector(p, pj, dx, dy, dz);
-        const double kk = (b.flags[k] & kBondSecond) ? m.k_second : m.k_first;
-        const double fm = bondForce(kk, m.t_half, halfElongation(len, b.rest[k]), sum_s, sum_j) / len;
+        const double fm = bondForce(bondStiffness(m, b.flags[k]), m.t_half, halfElongation(len, b.rest[k]), sum_s, sum_j) / len;
         fx += fm * dx;
         fy += fm * dy;
         fz += fm * dz;

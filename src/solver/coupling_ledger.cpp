@@ -45,7 +45,7 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
         r.work += st.solid_work[s];
         const physics::Double3 p = st.pos[id];
         r.potential -= m * (g.x * (p.x - pos0[id].x) + g.y * (p.y - pos0[id].y) + g.z * (p.z - pos0[id].z));
-        // U = sum_I [1/2 sum_J k dl^2 + 1/2 T (sum_J dl)^2] over intact bonds (each seen from I).
+        // U = sum_I [1/2 sum_J k dl^2 + 1/2 T (sum_J dl)^2] over intact bonds (each seen from I; vcpm.h).
         const physics::VcpmMaterial& mat = so.materials[so.body[s]];
         double sum = 0, springs = 0;
         for (int q = 0; q < so.count[s]; ++q) {
@@ -55,11 +55,10 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
             const std::uint32_t j_id = clamp ? so.clamp_id[so.partner[k]] : so.first_solid + so.partner[k];
             double dx, dy, dz;
             const double dl = physics::halfElongation(physics::bondVector(p, st.pos[j_id], dx, dy, dz), so.rest[k]);
-            const double kk = (so.flags[k] & physics::kBondSecond) ? mat.k_second : mat.k_first;
-            springs += 0.5 * kk * dl * dl * (clamp ? 2.0 : 1.0);  // a clamp bond is seen from one end only
+            springs += physics::bondSpringEnergy(physics::bondStiffness(mat, so.flags[k]), dl, clamp);
             sum += dl;
         }
-        r.elastic += springs + mat.t_half * sum * sum;
+        r.elastic += springs + physics::siteVolumetricEnergy(mat.t_half, sum);
     }
     // The clamp nodes' volumetric terms 1/2 T S_c^2 (T of the body they hold).
     for (std::uint32_t c = 0; c < so.nclamp; ++c) {
@@ -74,7 +73,7 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
             sum += physics::halfElongation(
                 physics::bondVector(p, st.pos[so.first_solid + so.clamp_partner[k]], dx, dy, dz), so.rest[slot]);
         }
-        r.elastic += so.materials[so.body[so.clamp_partner[c]]].t_half * sum * sum;
+        r.elastic += physics::siteVolumetricEnergy(so.materials[so.body[so.clamp_partner[c]]].t_half, sum);
     }
     return r;
 }

@@ -127,7 +127,7 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
                     addPoint(Vec3d{sp.point0.x + item.dir.x * k, sp.point0.y + item.dir.y * k,
                                    sp.point0.z + item.dir.z * k});
                 item.masslimit = sp.masslimit ? *sp.masslimit
-                                              : sp.masslimit_coef.value_or(dim_ == 3 ? 0.5 : 0.4) * massfluid_;
+                                              : sp.masslimit_coef.value_or(physics::swlMassLimitCoef(dim_)) * massfluid_;
                 break;
             }
             case GaugeKind::MaxZ: {

@@ -89,26 +89,23 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
     s.physics.dim = c.constants.dimensions;
     s.symplectic = p.step_algorithm == 2;
 
-    const double h = c.constants.h, dp = c.constants.dp, cs0 = c.constants.speedsound;
-    const double b = c.constants.b, rho0 = c.constants.rhop0;
-    FluidConstants& f = s.fluid;
-    f.ker = makeKernelConstants(h, dp, c.constants.dimensions);
-    f.eta2 = float((0.1 * h) * (0.1 * h));
-    f.cs0 = float(cs0);
-    f.cteb = float(b);
-    f.rhop0 = float(rho0);
-    f.ovrhop0 = float(1.0 / rho0);
-    f.massfluid = float(c.constants.massfluid);
-    f.massbound = float(c.constants.massbound);
-    f.visco = float(p.visco);
-    f.visco_bound = float(p.visco * p.visco_bound_factor);
-    f.ddtkh = float(p.density_dt_value * 2.0 * h);
-    // rhoH_ab = rho_b^H - rho_a^H needs +rho0|g|/B for gravity along -z (see density_diffusion.h).
-    f.ddtgz = float(-rho0 * c.constants.gravity.z / b);
+    const double h = c.constants.h, dp = c.constants.dp, rho0 = c.constants.rhop0;
+    FluidInputs fi;
+    fi.h = h;
+    fi.dp = dp;
+    fi.dim = c.constants.dimensions;
+    fi.cs0 = c.constants.speedsound;
+    fi.b = c.constants.b;
+    fi.rhop0 = rho0;
+    fi.massfluid = c.constants.massfluid;
+    fi.massbound = c.constants.massbound;
+    fi.visco = p.visco;
+    fi.visco_bound_factor = p.visco_bound_factor;
+    fi.ddt_value = p.density_dt_value;
+    fi.gravity_z = c.constants.gravity.z;
+    fi.dt_all_particles = p.dt_all_particles;
+    s.fluid = makeFluidConstants(fi);
     s.sps = makeSpsConstants(dp, c.constants.dimensions);
-    f.sps_smag = s.sps.smag;
-    f.sps_blin = s.sps.blin;
-    f.dt_all_particles = p.dt_all_particles ? 1 : 0;
 
     if (!makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
                       c.domain_max.z, h, cell_div, s.grid))

@@ -78,7 +78,7 @@ void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std:
                                                                          : so.first_solid + so.partner[k];
             double dx, dy, dz;
             const double len = physics::bondVector(p, st.pos[j], dx, dy, dz);
-            sum += (len - so.rest[k]) / so.rest[k];
+            sum += physics::bondStrain(len, so.rest[k]);
             ++intact;
         }
         strain[id] = intact > 0 ? float(sum / intact) : 0.f;

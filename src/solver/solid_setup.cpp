@@ -41,7 +41,7 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         s.materials.push_back(physics::vcpmMaterial(dim, sb.youngmod, sb.poissratio, sb.density, dp,
                                                     sb.damping, sb.critstretch));
         const physics::VcpmElastic el = physics::vcpmElastic(sb.youngmod, sb.poissratio, sb.density);
-        dt = std::min(dt, c.params.vcpm_dt_coef * dp / el.wave_speed);
+        dt = std::min(dt, physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
         const physics::VcpmMaterial& m = s.materials.back();
         s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + fmtg(sb.density) +
                                ", E " + fmtg(sb.youngmod) + ", nu " + fmtg(sb.poissratio) + ", c_S " +
@@ -65,7 +65,7 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         s.pos[k] = physics::Double3{ps.pos[id].x, ps.pos[id].y, ps.pos[id].z};
         s.vel[k] = physics::Double3{ps.vel[id].x, ps.vel[id].y, ps.vel[id].z};
         const SolidBody& sb = c.solids[it->second];
-        s.mass[k] = sb.density * dp * dp * (dim == 3 ? dp : 1.0);
+        s.mass[k] = physics::vcpmParticleMass(dim, sb.density, dp);
     }
 
     // Point loads: on the particle of the body nearest to the point (initial positions).

@@ -3,13 +3,18 @@
 /// \brief The boundary block's per-cell "near" flags (cellOccupiedAt + dilateCellsAt along x,
 ///        y, z) against a brute-force scan of each cell's search box, for every cell mode in
 ///        2D and 3D: a fluid particle may skip the boundary block only where it holds nothing.
+///        The candidate rows of forEachCandidateRow against a brute-force pair scan: every
+///        neighbour is among them, visited in sorted order.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <random>
 #include <vector>
 
 #include "physics/cell_grid.h"
+#include "physics/neighbour_rows.h"
 #include "physics/particle_updates.h"
 
 using namespace seaspring::physics;
@@ -59,5 +64,77 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
             EXPECT_GT(near, 0) << dim << "D, cells of 2h/" << div;  // both kinds occur: the check can fail
             EXPECT_GT(far, 0) << dim << "D, cells of 2h/" << div;
         }
+    }
+}
+
+namespace {
+
+/// Random particles in a box, cell-sorted, with their block's cell starts; then, for every
+/// particle, the neighbours found through forEachCandidateRow against all particles tested with
+/// the same pair offset (the frame of the row holding the partner, as hydroForceOnBoundary).
+template <int kDim>
+void checkCandidateRows(int div, std::mt19937& rng) {
+    const double h = 0.03;
+    CellGrid g;
+    ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.4, kDim == 3 ? 0.25 : 0.0, 0.3, h, div, g));
+    FluidConstants c;
+    c.ker.kernelsize2 = float((2.0 * h) * (2.0 * h));
+    const std::uint32_t n = kDim == 3 ? 1500 : 500;
+    std::uniform_real_distribution<double> ux(0, 0.4), uy(0, 0.25), uz(0, 0.3);
+    std::vector<Float4> pc(n);
+    std::vector<std::uint32_t> cell(n), order(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Double3 p{ux(rng), kDim == 3 ? uy(rng) : 0.0, uz(rng)};
+        pc[i] = makePosCell(g, p, cell[i]);
+    }
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return cell[a] < cell[b]; });
+    std::vector<Float4> ps(n);
+    const std::uint32_t nc = g.cellCount();
+    std::vector<std::uint32_t> cs(nc + 1, 0);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        ps[k] = pc[order[k]];
+        ++cs[cell[order[k]] + 1];
+    }
+    for (std::uint32_t k = 0; k < nc; ++k) cs[k + 1] += cs[k];
+    long long pairs = 0;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        const Float4 psa = ps[a];
+        std::vector<std::uint32_t> seen, found;
+        forEachCandidateRow<kDim>(psa, cs.data(), c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
+            for (std::uint32_t j = pb; j < pe; ++j) {
+                seen.push_back(j);
+                float dx, dy, dz;
+                if (isNeighbour(pairOffset<kDim>(par, ps[j], cax, g, dx, dy, dz), c)) found.push_back(j);
+            }
+        });
+        ASSERT_TRUE(std::is_sorted(seen.begin(), seen.end()) &&
+                    std::adjacent_find(seen.begin(), seen.end()) == seen.end())
+            << "candidates out of order, particle " << a;
+        std::vector<std::uint32_t> expected;
+        const int cay = kDim == 3 ? packedCellY(g, psa.w) : 0, caz = packedCellZ(g, psa.w);
+        const int cax = packedCellX(g, psa.w);
+        for (std::uint32_t b = 0; b < n; ++b) {
+            const Float4 psb = ps[b];
+            const float rowdy = kDim == 3 ? g.cellsizef * float(cay - packedCellY(g, psb.w)) : 0.f;
+            const float rowdz = g.cellsizef * float(caz - packedCellZ(g, psb.w));
+            float dx, dy, dz;
+            if (isNeighbour(pairOffset<kDim>(rowFrame(psa, rowdy, rowdz), psb, cax, g, dx, dy, dz), c))
+                expected.push_back(b);
+        }
+        ASSERT_EQ(found, expected) << kDim << "D, cells of 2h/" << div << ", particle " << a;
+        pairs += static_cast<long long>(found.size());
+        ASSERT_LT(seen.size(), std::size_t(n));  // the rows leave most particles out
+    }
+    EXPECT_GT(pairs, 10LL * n) << kDim << "D, cells of 2h/" << div;
+}
+
+}  // namespace
+
+TEST(CellSearch, CandidateRowsHoldEveryNeighbourInSortedOrder) {
+    std::mt19937 rng(3);
+    for (int div : {1, 2, 3}) {
+        checkCandidateRows<2>(div, rng);
+        checkCandidateRows<3>(div, rng);
     }
 }

@@ -1,13 +1,19 @@
 // SeaSpring — MIT licence.
 /// \file test_physics_kernels.cpp
 /// \brief Kernel normalisation and gradients (2D, 3D, Wendland, cubic), the Tait EOS, the
-///        seventh root and the DDT hydrostatic term against hand values.
+///        seventh root and the DDT hydrostatic term against hand values; the fluid constants of a
+///        case (makeFluidConstants) against hand values; a pair's acceleration alone
+///        (addPairAcceleration from -0) equals the plain products bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "physics/density_diffusion.h"
 #include "physics/eos_tait.h"
+#include "physics/fluid_constants.h"
+#include "physics/fluid_pair_terms.h"
 #include "physics/sph_kernels.h"
 #include "physics/viscosity.h"
 
@@ -146,4 +152,106 @@ TEST(Viscosity, SpsTauOfPureShear) {
     const SymTensor t = spsTau(gv, 1000.f, 1e-6f, 1e-7f);
     EXPECT_NEAR(t.xy, 1e-6 * 2.0 * 2.0 / 1000.0, 1e-12);
     EXPECT_NEAR(t.xx, -(1e-7 * 4.0) / 1000.0, 1e-13);
+}
+
+TEST(FluidConstants, HandValues) {
+    // 3D, h = 0.02, dp = 0.01, c0 = 30, rho0 = 1000, B = c0^2 rho0 / 7, g_z = -9.81.
+    FluidInputs in;
+    in.h = 0.02;
+    in.dp = 0.01;
+    in.dim = 3;
+    in.cs0 = 30;
+    in.b = 900.0 * 1000.0 / 7.0;
+    in.rhop0 = 1000;
+    in.massfluid = 1e-3;
+    in.massbound = 1.5e-3;
+    in.visco = 0.1;
+    in.visco_bound_factor = 2;
+    in.ddt_value = 0.1;
+    in.gravity_z = -9.81;
+    in.dt_all_particles = true;
+    const FluidConstants c = makeFluidConstants(in);
+    EXPECT_FLOAT_EQ(c.eta2, 4e-6f);                        // (0.1 h)^2
+    EXPECT_FLOAT_EQ(c.cs0, 30.f);
+    EXPECT_FLOAT_EQ(c.cteb, float(900.0 * 1000.0 / 7.0));
+    EXPECT_FLOAT_EQ(c.rhop0, 1000.f);
+    EXPECT_FLOAT_EQ(c.ovrhop0, 1e-3f);
+    EXPECT_FLOAT_EQ(c.massfluid, 1e-3f);
+    EXPECT_FLOAT_EQ(c.massbound, 1.5e-3f);
+    EXPECT_FLOAT_EQ(c.visco, 0.1f);
+    EXPECT_FLOAT_EQ(c.visco_bound, 0.2f);                  // x ViscoBoundFactor
+    EXPECT_FLOAT_EQ(c.ddtkh, 0.004f);                      // delta 2h
+    EXPECT_FLOAT_EQ(c.ddtgz, float(1000.0 * 9.81 * 7.0 / 900000.0));  // -rho0 g_z / B
+    EXPECT_EQ(c.dt_all_particles, 1);
+    // Kernel and SPS constants: the physics/ functions of the same inputs, bit for bit.
+    const KernelConstants k = makeKernelConstants(0.02, 0.01, 3);
+    EXPECT_EQ(std::memcmp(&c.ker, &k, sizeof k), 0);
+    EXPECT_FLOAT_EQ(c.ker.kernelsize2, 16e-4f);            // (2h)^2
+    const SpsConstants sps = makeSpsConstants(0.01, 3);
+    EXPECT_EQ(c.sps_smag, sps.smag);
+    EXPECT_EQ(c.sps_blin, sps.blin);
+    // Delta = dp/sqrt(3): smag = (0.12 Delta)^2, blin = (2/3) 0.0066 Delta^2.
+    EXPECT_FLOAT_EQ(c.sps_smag, float(0.0144 * 1e-4 / 3.0));
+    EXPECT_FLOAT_EQ(c.sps_blin, float(2.0 / 3.0 * 0.0066 * 1e-4 / 3.0));
+    in.dt_all_particles = false;
+    EXPECT_EQ(makeFluidConstants(in).dt_all_particles, 0);
+}
+
+namespace {
+
+std::uint32_t bitsOf(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+/// The reaction on a boundary particle as it was computed before addPairAcceleration: the plain
+/// products cf grad W, then the fused laminar term, then the SPS term.
+template <class Opt>
+void plainPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
+    ax = t.cf * t.frx;
+    ay = t.cf * t.fry;
+    az = t.cf * t.frz;
+    if (Opt::visco != Viscosity::Artificial) {
+        ax = fma32(t.cv, t.dvx, ax);
+        ay = fma32(t.cv, t.dvy, ay);
+        az = fma32(t.cv, t.dvz, az);
+        if (Opt::sps) {
+            ax += t.sx;
+            ay += t.sy;
+            az += t.sz;
+        }
+    }
+}
+
+template <class Opt>
+void checkAccelerationFromMinusZero() {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-2.f, 2.f);
+    const float zeros[] = {0.f, -0.f};
+    int zero_products = 0;
+    for (int n = 0; n < 20000; ++n) {
+        PairTerms t{};
+        // Zero factors of either sign (a product of +-0 keeps its sign only without an addend).
+        auto pick = [&](int k) { return (n >> k) % 7 == 0 ? zeros[(n >> (k + 3)) & 1] : u(rng); };
+        t.frx = pick(0), t.fry = pick(1), t.frz = pick(2), t.cf = pick(3);
+        t.cv = pick(4), t.dvx = pick(5), t.dvy = pick(6), t.dvz = u(rng);
+        t.sx = u(rng), t.sy = u(rng), t.sz = u(rng);
+        float ax = -0.f, ay = -0.f, az = -0.f, px, py, pz;
+        addPairAcceleration<Opt>(t, ax, ay, az);
+        plainPairAcceleration<Opt>(t, px, py, pz);
+        ASSERT_EQ(bitsOf(ax), bitsOf(px)) << n;
+        ASSERT_EQ(bitsOf(ay), bitsOf(py)) << n;
+        ASSERT_EQ(bitsOf(az), bitsOf(pz)) << n;
+        zero_products += t.cf * t.frx == 0.f ? 1 : 0;
+    }
+    EXPECT_GT(zero_products, 1000);  // signed zero products were exercised
+}
+
+}  // namespace
+
+TEST(PairAcceleration, FromMinusZeroEqualsThePlainProducts) {
+    checkAccelerationFromMinusZero<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::None, 3>>();
+    checkAccelerationFromMinusZero<FluidOptions<WendlandKernel, Viscosity::Laminar, DensityDiffusion::None, 3>>();
+    checkAccelerationFromMinusZero<FluidOptions<CubicKernel, Viscosity::LaminarSps, DensityDiffusion::None, 2>>();
 }

@@ -2,8 +2,9 @@
 /// \file test_vcpm_physics.cpp
 /// \brief VCPM lattice physics (physics/vcpm.h) on small lattice blocks built here from
 ///        gencase's lattice offsets: patch tests (3D and 2D recover E, nu and mu of the input),
-///        rigid motion, force = -dU/dx, breakage, the sub-step integrator, the sub-step count and
-///        the material constants.
+///        rigid motion, force = -dU/dx, breakage, the sub-step integrator, the sub-step count,
+///        the material constants, and the output formulas (lattice energy as the coupling ledger
+///        sums it, bond strain, particle mass, sub-step length).
 ///
 /// Stress is the virial stress of the centre particle I of the block (all its bonds and its
 /// neighbours' bonds complete):  sigma = -(1/(2V)) sum_J f_IJ u_IJ (x) r_IJ,  r_IJ = x_I - x_J,
@@ -525,6 +526,70 @@ TEST(VcpmPhysics, MaterialConstants) {
     EXPECT_NEAR(el.wave_speed, 40.19, 0.005);
     EXPECT_NEAR(el.shear, 3e6 / 2.6, 1e-6);
     EXPECT_NEAR(el.bulk, 3e6 / 1.2, 1e-6);
+}
+
+TEST(VcpmPhysics, EnergyOfOneBondByHand) {
+    // One first-neighbour bond stretched from L0 to L: dl = (L - L0)/2 at each end, S = dl at
+    // both sites: U = 2 (1/2 k dl^2) + 2 (1/2 T dl^2) = k dl^2 + 2 t_half dl^2.
+    VcpmMaterial m;
+    m.k_first = 1000.0;
+    m.k_second = 400.0;
+    m.t_half = 50.0;
+    const double rest = 0.01, len = 0.0102, dl = halfElongation(len, rest);
+    EXPECT_NEAR(dl, 1e-4, 1e-15);
+    const double k = bondStiffness(m, 0);
+    EXPECT_EQ(k, 1000.0);
+    EXPECT_EQ(bondStiffness(m, kBondSecond), 400.0);
+    EXPECT_EQ(bondStiffness(m, kBondSecond | kBondClamp), 400.0);
+    const double site = bondSpringEnergy(k, dl, false) + siteVolumetricEnergy(m.t_half, dl);
+    EXPECT_NEAR(2 * site, 1.1e-5, 1e-16);
+    // The same bond clamped: seen from the solid end only (k dl^2), plus the two sites'
+    // volumetric terms (the clamp node's S = dl too): the same energy.
+    const double clamped = bondSpringEnergy(k, dl, true) + siteVolumetricEnergy(m.t_half, dl) +
+                           siteVolumetricEnergy(m.t_half, dl);
+    EXPECT_NEAR(clamped, 1.1e-5, 1e-16);
+    // -dU/dL is bondForce (Eq. 13) with S_I = S_J = dl; dU/dL = dU/d(dl) / 2.
+    EXPECT_NEAR(bondForce(k, m.t_half, dl, dl, dl), -(2 * k * dl + 4 * m.t_half * dl) / 2, 1e-14);
+    EXPECT_NEAR(bondStrain(len, rest), 0.02, 1e-12);
+    EXPECT_NEAR(bondStrain(0.0099, rest), -0.01, 1e-12);
+}
+
+TEST(VcpmPhysics, LedgerEnergyEqualsTheLatticeEnergy) {
+    // The ledger's sum (bondSpringEnergy over intact bonds + siteVolumetricEnergy per site)
+    // against this file's independent energy(), whose gradient the forces match.
+    for (bool two_d : {false, true}) {
+        const double dp = 0.01;
+        Block b(two_d, 5, 4, 5, dp, vcpmMaterial(two_d ? 2 : 3, 1e6, 0.3, 1000.0, dp, 0, 0));
+        const std::uint32_t k0 = b.slot(b.at(1, two_d ? 0 : 1, 1), 2);
+        b.broken[k0] = b.broken[b.mirror[k0]] = 1;
+        std::mt19937_64 rng(5);
+        std::vector<Double3> x = b.ref;
+        perturb(x, 0.02 * dp, two_d, rng);
+        double u = 0.0;
+        for (std::uint32_t s = 0; s < b.n; ++s) {
+            double springs = 0.0, sum = 0.0;
+            for (int q = 0; q < b.count[s]; ++q) {
+                const std::uint32_t k = b.slot(s, q);
+                if (b.broken[k]) continue;
+                double dx, dy, dz;
+                const double dl = halfElongation(bondVector(x[s], x[b.partner[k]], dx, dy, dz), b.rest[k]);
+                springs += bondSpringEnergy(bondStiffness(b.mat, b.flags[k]), dl, false);
+                sum += dl;
+            }
+            u += springs + siteVolumetricEnergy(b.mat.t_half, sum);
+        }
+        const double ref = energy(b, x);
+        EXPECT_GT(ref, 0.0);
+        EXPECT_NEAR(u, ref, 1e-12 * ref) << (two_d ? "2D" : "3D");
+    }
+}
+
+TEST(VcpmPhysics, ParticleMassAndSubstepLength) {
+    EXPECT_NEAR(vcpmParticleMass(3, 2500, 0.02), 0.02, 1e-15);  // rho dp^3
+    EXPECT_NEAR(vcpmParticleMass(2, 2500, 0.02), 1.0, 1e-13);   // rho dp^2 (per m of thickness)
+    for (int dim : {2, 3})
+        EXPECT_EQ(vcpmMaterial(dim, 3e6, 0.3, 2500, 0.02, 0, 0).inv_mass, 1.0 / vcpmParticleMass(dim, 2500, 0.02));
+    EXPECT_NEAR(vcpmTimeStep(0.5, 0.02, 40.0), 2.5e-4, 1e-18);
 }
 
 }  // namespace

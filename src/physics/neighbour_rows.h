@@ -1,0 +1,105 @@
+// SeaSpring — MIT licence.
+/// \file neighbour_rows.h
+/// \brief The neighbour search shared by every pair loop (fluid and boundary forces, the
+///        hydrodynamic force on solids, gauges): the search box of a particle, the rows of cells
+///        in it that can hold a neighbour and their candidate ranges, visited in one fixed order
+///        by forEachCandidateRow; the pair offset in a row's frame and the neighbour test.
+///
+/// Row order: by z then y (ascending); inside a row, the contiguous particle range of its cells
+/// (sorted by cell, then id). Every loop visits its candidates through forEachCandidateRow, so
+/// all of them see the same rows, the same row floats and the same candidate order.
+#pragma once
+
+#include <cstdint>
+
+#include "physics/cell_grid.h"
+#include "physics/fluid_constants.h"
+#include "physics/sph_types.h"
+
+namespace seaspring::physics {
+
+/// Safety margin of the row spans, in cells: absorbs the rounding of the span arithmetic.
+constexpr float kRowSpanMargin = 1e-3f;
+
+/// Particle a's cell offsets moved into the frame of one row of cells: y + rowdy, z + rowdz,
+/// rowdy/rowdz = cellsize * (a's cell - the row's cell) in y/z. Computed once per row.
+SEASPRING_HD inline Float4 rowFrame(const Float4& psa, float rowdy, float rowdz) {
+    return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
+}
+
+/// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
+/// rowFrame for that row.
+template <int kDim>
+SEASPRING_HD inline float pairOffset(const Float4& par, const Float4& psb, int cax, const CellGrid& g,
+                                     float& drx, float& dry, float& drz) {
+    drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), par.x - psb.x);
+    dry = kDim == 3 ? par.y - psb.y : 0.f;
+    drz = par.z - psb.z;
+    return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
+}
+
+/// The exact neighbour test of a pair (inside the kernel support, not the particle itself).
+SEASPRING_HD inline bool isNeighbour(float rr2, const FluidConstants& c) {
+    return rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero;
+}
+
+/// The cells around a particle's cell that its neighbour search visits: rows y0..y1, z0..z1
+/// (2D: y0 = y1 = 0) of at most 2 range + 1 cells each.
+struct SearchBox {
+    int cax, cay, caz, y0, y1, z0, z1;
+    float margin;  ///< rowSpan's safety margin [m]
+};
+
+template <int kDim>
+SEASPRING_HD inline SearchBox searchBox(const Float4& psa, const CellGrid& g) {
+    SearchBox b;
+    b.cax = packedCellX(g, psa.w);
+    b.cay = kDim == 3 ? packedCellY(g, psa.w) : 0;
+    b.caz = packedCellZ(g, psa.w);
+    b.y0 = kDim == 3 ? maxi(b.cay - g.range, 0) : 0;
+    b.y1 = kDim == 3 ? mini(b.cay + g.range, g.ncy - 1) : 0;
+    b.z0 = maxi(b.caz - g.range, 0);
+    b.z1 = mini(b.caz + g.range, g.ncz - 1);
+    b.margin = kRowSpanMargin * g.cellsizef;
+    return b;
+}
+
+/// Candidates [pb, pe) of row (y, z) in the block whose first indices per cell are
+/// `cell_start`: the cells of the row in reach of `psa` (rowSpan). `gz` = the row's gap in z
+/// (cellGap, once per z). False when the row is out of reach.
+template <int kDim>
+SEASPRING_HD inline bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
+                                       const std::uint32_t* cell_start, const FluidConstants& c,
+                                       const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
+    const float gy = kDim == 3 ? cellGap(y - b.cay, psa.y, g.cellsizef, b.margin) : 0.f;
+    int x0, x1;
+    if (!rowSpan(g, b.cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, b.margin, x0, x1)) return false;
+    const std::uint32_t row = g.linear(0, y, z);
+    pb = cell_start[row + std::uint32_t(x0)];
+    pe = cell_start[row + std::uint32_t(x1) + 1u];
+    return true;
+}
+
+/// Visits the rows of cells around `psa`'s cell that can hold a neighbour of it (by z then y,
+/// ascending) in one block (`cell_start` of that block), calling
+///   fn(pb, pe, par, cax)
+/// for each row in reach: candidates [pb, pe) (absolute indices), `par` = psa's rowFrame for
+/// that row and `cax` = psa's cell in x (the arguments of pairOffset). The one row walk of every
+/// pair loop; `fn` is a lambda or functor passed by value (inlined on both backends).
+template <int kDim, class RowFn>
+SEASPRING_HD inline void forEachCandidateRow(const Float4& psa, const std::uint32_t* cell_start,
+                                             const FluidConstants& c, const CellGrid& g, RowFn fn) {
+    const SearchBox box = searchBox<kDim>(psa, g);
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        for (int y = box.y0; y <= box.y1; ++y) {
+            std::uint32_t pb, pe;
+            if (!rowCandidates<kDim>(box, psa, y, z, gz, cell_start, c, g, pb, pe)) continue;
+            const float rowdy = g.cellsizef * float(box.cay - y);
+            fn(pb, pe, rowFrame(psa, rowdy, rowdz), box.cax);
+        }
+    }
+}
+
+}  // namespace seaspring::physics
