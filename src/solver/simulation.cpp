@@ -1,11 +1,8 @@
 // SeaSpring — MIT licence.
 /// \file simulation.cpp
-/// \brief The time loop (see simulation.h).
+/// \brief A run's setup (backend data, cell division, physics line) and its outputs (see simulation.h).
 #include "solver/simulation.h"
 
-#include <algorithm>
-#include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,18 +16,12 @@
 #include "physics/eos_tait.h"
 #include "solver/coupling_ledger.h"
 #include "solver/gauge_system.h"
-#include "solver/motion_player.h"
-#include "solver/state_hash.h"
 
 namespace seaspring::solver {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 namespace {
-double seconds(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-}
 std::string fmt(const char* f, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, f, v);
@@ -203,42 +194,6 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     }
 }
 
-std::vector<physics::RigidMotionGpu> Simulation::motionsOver(double time, double interval) const {
-    std::vector<physics::RigidMotionGpu> m(case_.motion.objects.size());
-    for (std::size_t o = 0; o < m.size(); ++o) {
-        const RigidTransform a = motionTransformAt(case_.motion.objects[o], time);
-        const RigidTransform b = motionTransformAt(case_.motion.objects[o], time + interval);
-        for (int r = 0; r < 3; ++r) {
-            for (int col = 0; col < 3; ++col) {
-                m[o].r[3 * r + col] = a.r[r][col];
-                m[o].r_next[3 * r + col] = b.r[r][col];
-            }
-            m[o].t[r] = a.t[r];
-            m[o].t_next[r] = b.t[r];
-        }
-        m[o].inv_dt = 1.0 / interval;
-    }
-    return m;
-}
-
-void Simulation::placeMoving(double time, double interval) {
-    if (setup_.nmoving == 0) return;
-    backend_->applyMotion(motionsOver(time, interval));
-}
-
-double Simulation::limitDt(double dt) {
-    const double h = case_.constants.h, cs0 = case_.constants.speedsound;
-    const double dtmin = case_.params.dt_min > 0 ? case_.params.dt_min : case_.params.coef_dt_min * h / cs0;
-    if (!std::isfinite(dt))
-        throw Error("the time step is not finite (dt = " + fmt("%g", dt) +
-                    "): the simulation became unstable; check the last output");
-    if (dt < dtmin) {
-        ++sum_.dtmin_hits;
-        return dtmin;
-    }
-    return dt;
-}
-
 void Simulation::output(double time, long long step) {
     HostState st;
     backend_->download(st);
@@ -319,186 +274,6 @@ void Simulation::output(double time, long long step) {
     if (gauges_) gauges_->flush();
     ++out_index_;
     sum_.outputs = out_index_;
-}
-
-RunSummary Simulation::run() {
-    const auto t_start = Clock::now();
-    const SolverParameters& p = case_.params;
-    const double h = case_.constants.h, cs0 = case_.constants.speedsound, cfl = p.cfl_number;
-    const double tmax = p.time_max, tout = p.time_out;
-    const long long max_steps = opt_.nsteps ? *opt_.nsteps : -1;
-    const bool symplectic = p.step_algorithm == 2;
-
-    backend_->init(setup_);
-    placeMoving(0.0, p.dt_ini > 0 ? p.dt_ini : h / cs0);
-    backend_->divide(false);
-    if (gauges_) {
-        gauges_->attach(*backend_);
-        gauges_->evaluate(0.0, *backend_);
-    }
-    output(0.0, 0);
-
-    // SEASPRING_TIMERS=1: wall time per phase (synchronising the device after each phase).
-    const bool timers = std::getenv("SEASPRING_TIMERS") != nullptr;
-    double t_divide = 0, t_forces = 0, t_integrate = 0, t_other = 0, t_solid = 0;
-    const bool solids = !setup_.solid.empty();
-    const bool solid_only = solids && case_.nfluid == 0;
-    const bool midpoint = solids && !solid_only && symplectic && p.vcpm_coupling == 2;
-    const double solid_dt = p.dt_fixed > 0 && solid_only ? std::min(p.dt_fixed, setup_.solid.dt) : setup_.solid.dt;
-    bool clamp_moves = false;
-    for (std::int16_t o : setup_.solid.clamp_object) clamp_moves = clamp_moves || o >= 0;
-    auto phase = [&](double& acc, auto&& fn) {
-        if (!timers) return fn();
-        const auto a = Clock::now();
-        auto r = fn();
-        backend_->synchronize();
-        acc += seconds(a, Clock::now());
-        return r;
-    };
-    auto forces = [&] { return phase(t_forces, [&] { return backend_->computeForces(); }); };
-    auto predictor = [&](double dt) { phase(t_integrate, [&] { backend_->symplecticPredictor(dt); return 0; }); };
-    auto corrector = [&](double dt) { phase(t_integrate, [&] { backend_->symplecticCorrector(dt); return 0; }); };
-    auto verlet = [&](double dt, bool e) { phase(t_integrate, [&] { backend_->verletStep(dt, e); return 0; }); };
-    auto divide = [&](bool keep_step_start) {
-        phase(t_divide, [&] { backend_->divide(keep_step_start); return 0; });
-    };
-    double t = 0, dt_next = p.dt_ini > 0 ? p.dt_ini : h / cs0, dt_prev = dt_next;
-    double next_out = tout;
-    long long step = 0;
-    int verlet_count = 0;
-    const auto t_loop = Clock::now();
-    auto t_progress = t_loop;
-    bool warned_out = false;
-    sum_.stop_reason = "TimeMax reached";
-    while (t < tmax - 1e-12 * tmax) {
-        if (max_steps >= 0 && step >= max_steps) {
-            sum_.stop_reason = "step limit (-nsteps) reached";
-            break;
-        }
-        double dt;
-        if (solid_only) {
-            // No fluid: the solid advances by its own sub-step, in chunks up to the next output
-            // (one sub-step per chunk when a clamp moves, so that it follows its motion law).
-            dt = solid_dt;
-            const double until = std::min({next_out, tmax, gauges_ ? gauges_->nextTime() : tmax});
-            long long n = std::max(1LL, (long long)std::ceil((until - t) / dt - 1e-9));
-            if (clamp_moves) n = 1;
-            if (max_steps >= 0) n = std::min(n, max_steps - step);
-            phase(t_integrate, [&] { solidOnlySteps(t, n, dt); return 0; });
-            t += double(n) * dt;
-            step += n;
-            placeMoving(t, dt);
-        } else {
-            if (symplectic) {
-                dt = p.dt_fixed > 0 ? p.dt_fixed : dt_next;
-                const double dtp = limitDt(physics::variableDt(forces(), h, cs0, cfl));
-                if (midpoint) {
-                    // Staggered midpoint: the solid goes to n+1/2 with the force of the fluid at n, so
-                    // that the corrector's evaluation sees fluid and solid at n+1/2; then the solid
-                    // restarts from n with that evaluation's force (below).
-                    phase(t_solid, [&] {
-                        backend_->solidHydroForces();
-                        backend_->solidSave();
-                        advanceSolid(t, 0.5 * dt, false);
-                        return 0;
-                    });
-                }
-                predictor(dt);
-                divide(true);
-                const double dtc = limitDt(physics::variableDt(forces(), h, cs0, cfl));
-                if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
-                if (midpoint) phase(t_solid, [&] { backend_->solidRestore(); return 0; });
-                corrector(dt);
-                dt_next = std::min(dtp, dtc);
-            } else {
-                const double dtv = limitDt(physics::variableDt(forces(), h, cs0, cfl));
-                dt = p.dt_fixed > 0 ? p.dt_fixed : dtv;
-                const bool euler = ++verlet_count >= p.verlet_steps;
-                if (euler) verlet_count = 0;
-                if (solids) phase(t_solid, [&] { backend_->solidHydroForces(); return 0; });
-                verlet(dt, euler);
-                dt_prev = dt;
-            }
-            if (solids) phase(t_solid, [&] { advanceSolid(t, dt); return 0; });
-            t += dt;
-            ++step;
-            // Moving boundaries: pose at t, velocity over the coming step (its dt when known).
-            phase(t_other, [&] {
-                placeMoving(t, symplectic ? (p.dt_fixed > 0 ? p.dt_fixed : dt_next) : dt_prev);
-                return 0;
-            });
-            divide(false);
-        }
-        sum_.dt_last = dt;
-        if (gauges_) gauges_->evaluate(t, *backend_);
-        const std::uint32_t active = backend_->activeFluid();
-        if (!warned_out && case_.nfluid > 0 &&
-            double(case_.nfluid - active) > p.wrn_parts_out / 100.0 * case_.nfluid) {
-            log_ << "warning: " << (case_.nfluid - active) << " fluid particles excluded (more than "
-                 << p.wrn_parts_out << "% of the fluid)\n";
-            warned_out = true;
-        }
-        if (t >= next_out - 1e-9 * tout || t >= tmax) {
-            output(t, step);
-            while (next_out <= t + 1e-9 * tout) next_out += tout;
-        }
-        if (p.min_fluid_stop > 0 && case_.nfluid > 0 && double(active) < p.min_fluid_stop * case_.nfluid) {
-            sum_.stop_reason = "fluid below MinFluidStop";
-            break;
-        }
-        const auto now = Clock::now();
-        if (!opt_.quiet && opt_.progress_interval > 0 && seconds(t_progress, now) >= opt_.progress_interval) {
-            t_progress = now;
-            const double el = seconds(t_loop, now);
-            const double sps = step / el;
-            const double ns = el * 1e9 / (double(step) * double(sum_.np));
-            const double eta = t > 0 ? el * (tmax - t) / t : 0;
-            char line[256];
-            std::snprintf(line, sizeof line,
-                          "t=%.5f/%.4g s  steps=%lld  dt=%.3e  %.1f steps/s  %.2f ns/particle/step  "
-                          "fluid=%u  dtmin-hits=%lld  ETA %.0f s\n",
-                          t, tmax, step, dt, sps, ns, active, sum_.dtmin_hits, eta);
-            log_ << line << std::flush;
-        }
-    }
-    const auto t_end_loop = Clock::now();
-    if (timers && step > 0) {
-        char line[256];
-        std::snprintf(line, sizeof line,
-                      "phase times per step [ms]: divide %.3f  forces %.3f  integrate %.3f  motion %.3f  solid %.3f\n",
-                      1e3 * t_divide / step, 1e3 * t_forces / step, 1e3 * t_integrate / step, 1e3 * t_other / step,
-                      1e3 * t_solid / step);
-        log_ << line;
-    }
-    if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
-    if (gauges_) {
-        gauges_->flush();
-        sum_.gauge_rows = gauges_->rows();
-    }
-    backend_->download(final_);
-    sum_.state_hash = hashHex(stateHash(final_));
-    for (std::uint8_t e : final_.excl) {
-        if (e == physics::kExcludedPosition) ++sum_.excluded_position;
-        if (e == physics::kExcludedDensity) ++sum_.excluded_density;
-        if (e == physics::kExcludedNotFinite) ++sum_.excluded_not_finite;
-    }
-    sum_.fluid_active = backend_->activeFluid();
-    sum_.steps = step;
-    sum_.physical_time = t;
-    sum_.loop_time = seconds(t_loop, t_end_loop);
-    sum_.wall_time = seconds(t_start, Clock::now());
-    sum_.ns_per_particle_step = step > 0 ? sum_.loop_time * 1e9 / (double(step) * double(sum_.np)) : 0;
-    if (solids) {
-        if (solid_only) {
-            sum_.solid_substeps = step;  // each step is one solid sub-step
-            sum_.omega_max = step > 0 ? 1 : 0;
-        }
-        sum_.solid_dt = setup_.solid.dt;
-        sum_.broken_bonds = brokenBonds(final_);
-        if (solid_only && step > 0)
-            sum_.ns_per_particle_step = sum_.loop_time * 1e9 / (double(step) * double(setup_.solid.nsolid));
-    }
-    return sum_;
 }
 
 }  // namespace seaspring::solver

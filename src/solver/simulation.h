@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file simulation.h
-/// \brief The time loop: symplectic or Verlet steps with the variable dt, moving boundaries,
-///        outputs at every TimeOut, progress lines, and the run summary (run.json).
+/// \brief A run: the time loop (steps of the case's scheme, time_steppers.h), outputs at every
+///        TimeOut, gauges, progress lines, stop rules, and the run summary (run.json).
 #pragma once
 
 #include <cstdint>
@@ -18,6 +18,7 @@
 namespace seaspring::solver {
 
 class GaugeSystem;
+struct StepCounters;
 
 /// What run.json reports.
 struct RunSummary {
@@ -69,18 +70,12 @@ private:
     /// Per-particle solid fields of the part files (zero for other particles).
     void solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
                      std::vector<std::uint8_t>& broken, std::vector<float>& damage) const;
-    void placeMoving(double time, double interval);
-    /// Motion objects' poses at `time` and `time + interval`.
-    std::vector<physics::RigidMotionGpu> motionsOver(double time, double interval) const;
-    /// The solid sub-cycle of one fluid step [time, time + dt_fluid] (no-op without solids).
-    void advanceSolid(double time, double dt_fluid, bool ledger = true);
-    /// Solid-only cases: `n` solid sub-steps from `time`.
-    void solidOnlySteps(double time, long long n, double dt);
     /// Stops the run (seaspring::Error) when a solid position is not finite.
     void checkSolidFinite(const HostState& st, double time) const;
     /// Broken bonds (each solid-solid bond counted once) in `st`.
     std::uint64_t brokenBonds(const HostState& st) const;
-    double limitDt(double dt);
+    /// After the loop: the last output when none was written, the final state, run.json's counts.
+    void finish(double t, long long steps, double loop_time, const StepCounters& counters);
 
     const SolverCase& case_;
     RunOptions opt_;

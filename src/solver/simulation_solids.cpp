@@ -1,8 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file simulation_solids.cpp
-/// \brief The VCPM parts of the time loop (see simulation.h): the solid sub-cycle of a fluid
-///        step, solid-only steps, broken-bond counts and the solid fields of the outputs.
-#include <algorithm>
+/// \brief The VCPM parts of a run's outputs and summary (see simulation.h): the finiteness
+///        check, broken-bond counts and the solid fields of the part files.
 #include <cstdio>
 
 #include "core/error.h"
@@ -32,23 +31,6 @@ std::uint64_t Simulation::brokenBonds(const HostState& st) const {
     for (std::size_t k = 0; k < st.bond_broken.size(); ++k)
         if (st.bond_broken[k]) ((so.flags[k] & physics::kBondClamp) ? clamp : solid_slots) += 1;
     return solid_slots / 2 + clamp;
-}
-
-void Simulation::solidOnlySteps(double time, long long n, double dt) {
-    while (n > 0) {
-        const int chunk = int(std::min<long long>(n, 1 << 30));
-        backend_->solidSteps(time, dt, chunk, motionsOver(time, dt * chunk), true);
-        time += dt * chunk;
-        n -= chunk;
-    }
-}
-
-void Simulation::advanceSolid(double time, double dt_fluid, bool ledger) {
-    if (setup_.solid.empty()) return;
-    const int omega = opt_.solid_substeps > 0 ? opt_.solid_substeps : physics::solidSubsteps(dt_fluid, setup_.solid.dt);
-    backend_->solidSteps(time, dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
-    sum_.solid_substeps += omega;
-    sum_.omega_max = std::max(sum_.omega_max, omega);
 }
 
 void Simulation::solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,

@@ -1,0 +1,34 @@
+// SeaSpring — MIT licence.
+/// \file run_progress.h
+/// \brief The wall clock of the time loop and its progress lines
+///        ("t=0.01234/1 s  steps=...  dt=...  steps/s  ns/particle/step  fluid=...  ETA ... s").
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <iosfwd>
+
+namespace seaspring::solver {
+
+class RunProgress {
+    using Clock = std::chrono::steady_clock;
+
+public:
+    /// Starts the loop clock. A progress line at most every `interval` seconds of wall time
+    /// (none when `interval` is 0); `tmax` and `np` (particles) give the ETA and the cost per particle.
+    RunProgress(std::ostream& log, double interval, double tmax, std::uint32_t np);
+
+    /// After each pass of the loop: prints a line when `interval` has passed since the last one
+    /// (or since the start).
+    void afterStep(double t, long long step, double dt, std::uint32_t active_fluid, long long dtmin_hits);
+
+    /// Wall seconds since the loop started.
+    double elapsed() const;
+
+private:
+    std::ostream& log_;
+    double interval_, tmax_, np_;
+    Clock::time_point start_, last_line_;
+};
+
+}  // namespace seaspring::solver

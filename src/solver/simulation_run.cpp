@@ -1,0 +1,121 @@
+// SeaSpring — MIT licence.
+/// \file simulation_run.cpp
+/// \brief The time loop of Simulation::run (see simulation.h): one step of the case's scheme
+///        (time_steppers.h), then gauges, warnings, outputs, stop rules and progress; the
+///        run summary at the end.
+#include <algorithm>
+#include <chrono>
+#include <ostream>
+
+#include "solver/gauge_system.h"
+#include "solver/phase_timers.h"
+#include "solver/run_progress.h"
+#include "solver/simulation.h"
+#include "solver/state_hash.h"
+#include "solver/step_context.h"
+#include "solver/time_steppers.h"
+
+namespace seaspring::solver {
+
+namespace {
+
+/// Warns when more than WrnPartsOut % of the fluid is excluded; returns whether it warned.
+bool warnExcludedFluid(std::ostream& log, const SolverCase& c, std::uint32_t active) {
+    if (c.nfluid == 0 || !(double(c.nfluid - active) > c.params.wrn_parts_out / 100.0 * c.nfluid)) return false;
+    log << "warning: " << (c.nfluid - active) << " fluid particles excluded (more than " << c.params.wrn_parts_out
+        << "% of the fluid)\n";
+    return true;
+}
+
+}  // namespace
+
+RunSummary Simulation::run() {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point t_start = Clock::now();
+    const SolverParameters& p = case_.params;
+    const double tmax = p.time_max, tout = p.time_out;
+    const long long max_steps = opt_.nsteps ? *opt_.nsteps : -1;
+    PhaseTimers timers(*backend_);  // SEASPRING_TIMERS=1
+    StepContext ctx(*backend_, case_, setup_, opt_.solid_substeps, timers);
+
+    backend_->init(setup_);
+    ctx.placeMoving(0.0, initialDt(case_));
+    backend_->divide(false);
+    if (gauges_) {
+        gauges_->attach(*backend_);
+        gauges_->evaluate(0.0, *backend_);
+    }
+    output(0.0, 0);
+
+    const std::unique_ptr<TimeStepper> stepper = makeTimeStepper(ctx);
+    double t = 0, next_out = tout;
+    long long step = 0;
+    bool warned_out = false;
+    RunProgress progress(log_, opt_.quiet ? 0.0 : opt_.progress_interval, tmax, sum_.np);
+    sum_.stop_reason = "TimeMax reached";
+    while (t < tmax - 1e-12 * tmax) {
+        if (max_steps >= 0 && step >= max_steps) {
+            sum_.stop_reason = "step limit (-nsteps) reached";
+            break;
+        }
+        const StepWindow window{std::min({next_out, tmax, gauges_ ? gauges_->nextTime() : tmax}),
+                                max_steps >= 0 ? max_steps - step : -1};
+        const StepResult done = stepper->advance(t, window);
+        t = done.time;
+        step += done.steps;
+        sum_.dt_last = done.dt;
+
+        if (gauges_) gauges_->evaluate(t, *backend_);
+        const std::uint32_t active = backend_->activeFluid();
+        if (!warned_out) warned_out = warnExcludedFluid(log_, case_, active);
+        if (t >= next_out - 1e-9 * tout || t >= tmax) {
+            output(t, step);
+            while (next_out <= t + 1e-9 * tout) next_out += tout;
+        }
+        if (p.min_fluid_stop > 0 && case_.nfluid > 0 && double(active) < p.min_fluid_stop * case_.nfluid) {
+            sum_.stop_reason = "fluid below MinFluidStop";
+            break;
+        }
+        progress.afterStep(t, step, done.dt, active, ctx.counters().dtmin_hits);
+    }
+    const double loop_time = progress.elapsed();
+    timers.report(log_, step);
+    finish(t, step, loop_time, ctx.counters());
+    sum_.wall_time = std::chrono::duration<double>(Clock::now() - t_start).count();
+    return sum_;
+}
+
+void Simulation::finish(double t, long long step, double loop_time, const StepCounters& counters) {
+    if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
+    if (gauges_) {
+        gauges_->flush();
+        sum_.gauge_rows = gauges_->rows();
+    }
+    backend_->download(final_);
+    sum_.state_hash = hashHex(stateHash(final_));
+    for (std::uint8_t e : final_.excl) {
+        if (e == physics::kExcludedPosition) ++sum_.excluded_position;
+        if (e == physics::kExcludedDensity) ++sum_.excluded_density;
+        if (e == physics::kExcludedNotFinite) ++sum_.excluded_not_finite;
+    }
+    sum_.fluid_active = backend_->activeFluid();
+    sum_.steps = step;
+    sum_.physical_time = t;
+    sum_.loop_time = loop_time;
+    sum_.ns_per_particle_step = step > 0 ? loop_time * 1e9 / (double(step) * double(sum_.np)) : 0;
+    sum_.dtmin_hits = counters.dtmin_hits;
+    sum_.solid_substeps = counters.solid_substeps;
+    sum_.omega_max = counters.omega_max;
+    if (setup_.solid.empty()) return;
+    const bool solid_only = case_.nfluid == 0;
+    if (solid_only) {
+        sum_.solid_substeps = step;  // each step is one solid sub-step
+        sum_.omega_max = step > 0 ? 1 : 0;
+    }
+    sum_.solid_dt = setup_.solid.dt;
+    sum_.broken_bonds = brokenBonds(final_);
+    if (solid_only && step > 0)
+        sum_.ns_per_particle_step = loop_time * 1e9 / (double(step) * double(setup_.solid.nsolid));
+}
+
+}  // namespace seaspring::solver

@@ -1,0 +1,77 @@
+// SeaSpring — MIT licence.
+/// \file step_context.cpp
+/// \brief Services the time-step schemes share (see step_context.h).
+#include "solver/step_context.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/error.h"
+#include "physics/vcpm.h"
+#include "solver/motion_player.h"
+
+namespace seaspring::solver {
+
+double initialDt(const SolverCase& c) {
+    return c.params.dt_ini > 0 ? c.params.dt_ini : c.constants.h / c.constants.speedsound;
+}
+
+StepContext::StepContext(Backend& backend, const SolverCase& c, const BackendSetup& setup, int solid_substeps,
+                         PhaseTimers& timers)
+    : backend_(backend), case_(c), setup_(setup), solid_substeps_(solid_substeps), timers_(timers) {}
+
+std::vector<physics::RigidMotionGpu> StepContext::motionsOver(double time, double interval) const {
+    std::vector<physics::RigidMotionGpu> m(case_.motion.objects.size());
+    for (std::size_t o = 0; o < m.size(); ++o) {
+        const RigidTransform a = motionTransformAt(case_.motion.objects[o], time);
+        const RigidTransform b = motionTransformAt(case_.motion.objects[o], time + interval);
+        for (int r = 0; r < 3; ++r) {
+            for (int col = 0; col < 3; ++col) {
+                m[o].r[3 * r + col] = a.r[r][col];
+                m[o].r_next[3 * r + col] = b.r[r][col];
+            }
+            m[o].t[r] = a.t[r];
+            m[o].t_next[r] = b.t[r];
+        }
+        m[o].inv_dt = 1.0 / interval;
+    }
+    return m;
+}
+
+void StepContext::placeMoving(double time, double interval) {
+    if (setup_.nmoving == 0) return;
+    backend_.applyMotion(motionsOver(time, interval));
+}
+
+double StepContext::forcesDt() {
+    const physics::DtMaxima m = timers_.time(PhaseTimers::Forces, [&] { return backend_.computeForces(); });
+    return limitDt(physics::variableDt(m, case_.constants.h, case_.constants.speedsound, case_.params.cfl_number));
+}
+
+double StepContext::limitDt(double dt) {
+    const double h = case_.constants.h, cs0 = case_.constants.speedsound;
+    const double dtmin = case_.params.dt_min > 0 ? case_.params.dt_min : case_.params.coef_dt_min * h / cs0;
+    if (!std::isfinite(dt)) {
+        char v[64];
+        std::snprintf(v, sizeof v, "%g", dt);
+        throw Error("the time step is not finite (dt = " + std::string(v) +
+                    "): the simulation became unstable; check the last output");
+    }
+    if (dt < dtmin) {
+        ++counters_.dtmin_hits;
+        return dtmin;
+    }
+    return dt;
+}
+
+void StepContext::advanceSolid(double time, double dt_fluid, bool ledger) {
+    if (setup_.solid.empty()) return;
+    const int omega = solid_substeps_ > 0 ? solid_substeps_ : physics::solidSubsteps(dt_fluid, setup_.solid.dt);
+    backend_.solidSteps(time, dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
+    counters_.solid_substeps += omega;
+    counters_.omega_max = std::max(counters_.omega_max, omega);
+}
+
+}  // namespace seaspring::solver
