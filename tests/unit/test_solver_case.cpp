@@ -274,7 +274,7 @@ TEST(SolverCase, MovingBoundarySolidAndGauges) {
     // The gauges as gencase resolved them (expression evaluated) are read back.
     EXPECT_TRUE(c.notes.empty());
     ASSERT_EQ(c.gauges.gauges.size(), 1u);
-    EXPECT_EQ(c.gauges.gauges[0].kind, gencase::GaugeKind::Velocity);
+    EXPECT_EQ(c.gauges.gauges[0].kind, model::GaugeKind::Velocity);
     EXPECT_EQ(c.gauges.gauges[0].name, "V");
     EXPECT_EQ(c.gauges.gauges[0].point.x, 0.25);
     EXPECT_EQ(c.gauges.defaults.output, std::optional<bool>(true));
