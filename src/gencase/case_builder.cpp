@@ -159,7 +159,7 @@ void CaseBuilder::readGauges(pugi::xml_node execution) {
         if (g.target_mkbound < 0) continue;
         bool found = false;
         for (const MkBlock& b : out_.blocks)
-            if (b.type != ParticleType::Fluid && b.mk_user == g.target_mkbound &&
+            if (b.type != ParticleType::Fluid && b.mk_local == g.target_mkbound &&
                 (!marker || b.type == ParticleType::Solid))
                 found = true;
         if (!found)
@@ -221,7 +221,7 @@ MkTypes CaseBuilder::classifyMks() const {
                                                       ": expected a mkbound 0.." + std::to_string(mk.boundcount - 1));
         types[mk.boundMk(o.mkbound)] = ParticleType::Moving;
     }
-    for (const SolidSpec& s : out_.solids) {
+    for (const SolidBody& s : out_.solids) {
         if (const MotionObject* o = out_.motion.find(s.mkbound))
             for (const Movement& m : o->movements)
                 if (m.kind != MovementKind::Null)
@@ -244,7 +244,7 @@ void CaseBuilder::checkMkUsage() const {
             throwInputError(src_->path(), o.line, "motion ref=" + std::to_string(o.mkbound) +
                                                       ": no particle was drawn with setmkbound mk=\"" +
                                                       std::to_string(o.mkbound) + "\"");
-    for (const SolidSpec& s : out_.solids) {
+    for (const SolidBody& s : out_.solids) {
         if (!present(s.mk))
             throwInputError(src_->path(), s.line, "solid mkbound=" + std::to_string(s.mkbound) +
                                                       " has no particles: draw it with setmkbound mk=\"" +
@@ -291,7 +291,7 @@ void CaseBuilder::finishParticles() {
                       std::uint16_t(out_.mkconfig.fluidcount));
     const double volume = grid_.twoD() ? c.dp * c.dp : c.dp * c.dp * c.dp;
     std::map<std::uint16_t, float> solid_mass;
-    for (const SolidSpec& s : out_.solids) solid_mass[s.mk] = float(s.density * volume);
+    for (const SolidBody& s : out_.solids) solid_mass[s.mk] = float(s.density * volume);
     for (std::size_t i = 0; i < p.size(); ++i) {
         switch (p.type[i]) {
             case ParticleType::Fluid: p.mass[i] = float(c.massfluid); break;
@@ -301,11 +301,15 @@ void CaseBuilder::finishParticles() {
     }
     if (!out_.solids.empty()) {
         BondBuildInput in{grid_.twoD(), grid_.dp(), &lattice_, &p, {}};
-        for (const SolidSpec& s : out_.solids) in.clamp_mks[s.mk] = s.clamp_mk;
+        for (const SolidBody& s : out_.solids) in.clamp_mks[s.mk] = s.clamp_mk;
         try {
             out_.bonds = buildBondNetwork(in, &out_.bond_stats);
         } catch (const Error& e) {
             src_->fail(src_->root().child("execution").child("special"), e.what());
+        }
+        for (SolidBody& s : out_.solids) {
+            const auto it = out_.bond_stats.particles_per_mk.find(s.mk);
+            s.particles = it == out_.bond_stats.particles_per_mk.end() ? 0 : it->second;
         }
     }
     pugi::xml_node sd = src_->root().child("execution").child("parameters").child("simulationdomain");
@@ -324,7 +328,7 @@ void CaseBuilder::printSummary() const {
          << g.count(ParticleType::Fluid) << ")\n";
     for (const MkBlock& b : g.blocks)
         log_ << "  MK " << b.mk << " (" << (b.type == ParticleType::Fluid ? "mkfluid " : "mkbound ")
-             << b.mk_user << ", " << particleTypeName(b.type) << "): " << b.count << " particles, ids "
+             << b.mk_local << ", " << particleTypeName(b.type) << "): " << b.count << " particles, ids "
              << b.begin << ".." << (b.begin + b.count - 1) << "\n";
     if (!g.solids.empty())
         log_ << "VCPM solids: " << g.bond_stats.solid_particles << " particles, " << g.bond_stats.bonds

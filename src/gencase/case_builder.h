@@ -10,6 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "case/gauge_spec.h"
+#include "case/mk_blocks.h"
+#include "case/parameters.h"
+#include "case/xml_source.h"
 #include "core/particle_set.h"
 #include "gencase/command_runner.h"
 #include "gencase/constants.h"
@@ -17,11 +21,15 @@
 #include "gencase/particle_extraction.h"
 #include "gencase/simulation_domain.h"
 #include "gencase/vcpm_bonds.h"
-#include "gencase/gauge_spec.h"
 #include "gencase/vcpm_solids.h"
-#include "gencase/xml_source.h"
 
 namespace seaspring::gencase {
+
+using model::GaugeKind;
+using model::GaugeSet;
+using model::GaugeSpec;
+using model::MkBlock;
+using model::XmlSource;
 
 struct GencaseOptions {
     std::string definition;   ///< CASE_Def.xml (".xml" may be omitted, as with GenCase)
@@ -31,30 +39,22 @@ struct GencaseOptions {
     bool verbose = false;
 };
 
-/// Particles of one MK: a contiguous id range.
-struct MkBlock {
-    ParticleType type;
-    std::uint16_t mk;    ///< global MK
-    int mk_user;         ///< mkfluid or mkbound as written in the case
-    std::uint32_t begin;
-    std::uint32_t count;
-};
-
-/// Everything gencase derives; the resolved-case writer and the tests read it.
+/// Everything gencase derives (the parts of the case model and what it takes to write them);
+/// the resolved-case writer and the tests read it.
 struct GeneratedCase {
     std::string name;
     MkConfig mkconfig;
     CaseConstants constants;
     ParticleSet particles;
-    std::vector<MkBlock> blocks;
-    std::vector<SolidSpec> solids;
+    std::vector<MkBlock> blocks;     ///< in id order
+    std::vector<SolidBody> solids;   ///< `particles` filled once the bonds are built
     GaugeSet gauges;  ///< <special><gauges> (lengths resolved)
     BondNetwork bonds;
     BondStats bond_stats;
     MotionSet motion;
     DomainBox particle_box;
     DomainBox domain;
-    std::vector<std::pair<std::string, std::string>> parameters;  ///< resolved, table order
+    model::ParameterValues parameters;  ///< resolved, table order
     std::size_t count(ParticleType t) const;
 };
 

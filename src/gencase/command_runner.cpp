@@ -11,6 +11,8 @@
 
 namespace seaspring::gencase {
 
+using model::parseNumber;
+
 namespace {
 
 constexpr int kMaxListDepth = 32;

@@ -14,12 +14,14 @@
 
 #include <pugixml.hpp>
 
+#include "case/xml_source.h"
 #include "gencase/expression.h"
 #include "gencase/lattice_grid.h"
 #include "gencase/shapes.h"
-#include "gencase/xml_source.h"
 
 namespace seaspring::gencase {
+
+using model::XmlSource;
 
 struct MkConfig {
     int fluidcount = 9;

@@ -1,18 +1,22 @@
 // SeaSpring — MIT licence.
 /// \file constants.h
 /// \brief `<constantsdef>`: read the user's values and derive h, c0, B and masses exactly as
-///        DualSPHysics' GenCase does.
+///        DualSPHysics' GenCase does (the result, CaseConstants, is the case model's).
 #pragma once
 
 #include <iosfwd>
 
 #include <pugixml.hpp>
 
+#include "case/case_constants.h"
+#include "case/xml_source.h"
 #include "core/vec3.h"
 #include "gencase/expression.h"
-#include "gencase/xml_source.h"
 
 namespace seaspring::gencase {
+
+using model::CaseConstants;
+using model::XmlSource;
 
 /// A value that GenCase either takes from the file or derives (`auto="true"`).
 struct AutoValue {
@@ -34,17 +38,6 @@ struct ConstantsInput {
     double cflnumber = 0.2;
 };
 
-/// Derived constants, as written to the resolved case.
-struct CaseConstants {
-    int dimensions = 3;
-    double dp = 0;
-    Vec3d gravity{0, 0, -9.81};
-    double rhop0 = 1000, gamma = 7, cflnumber = 0.2, coefsound = 20, coefh = 0, hdp = 0;
-    int rhopgradient = 2;
-    double hswl = 0, speedsystem = 0, speedsound = 0;
-    double h = 0, b = 0, massbound = 0, massfluid = 0;
-};
-
 ConstantsInput parseConstantsDef(const XmlSource& src, pugi::xml_node node,
                                  const ExpressionEvaluator& ev);
 
@@ -53,8 +46,5 @@ ConstantsInput parseConstantsDef(const XmlSource& src, pugi::xml_node node,
 CaseConstants computeConstants(const ConstantsInput& in, double dp, bool two_d, double fluid_height);
 
 void printConstants(std::ostream& os, const CaseConstants& c);
-/// Appends `<constants>` with every value (full precision) to `parent`.
-void writeConstants(pugi::xml_node parent, const CaseConstants& c);
-CaseConstants readConstants(const XmlSource& src, pugi::xml_node constants);
 
 }  // namespace seaspring::gencase

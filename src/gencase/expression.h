@@ -13,21 +13,20 @@
 #pragma once
 
 #include <map>
-#include <stdexcept>
 #include <string>
 
+#include "case/xml_source.h"
 #include "core/vec3.h"
 
 namespace seaspring::gencase {
 
-/// Raised for a malformed expression, an unknown variable or function, or a NaN result.
+/// Raised for a malformed expression, an unknown variable or function, or a NaN result
+/// (the case model's ValueError, which XmlSource turns into "file:line: ..." messages).
 /// The message names the expression and the problem; callers add file:line.
-class ExpressionError : public std::runtime_error {
-public:
-    explicit ExpressionError(const std::string& m) : std::runtime_error(m) {}
-};
+using ExpressionError = model::ValueError;
 
-class ExpressionEvaluator {
+/// The `#...` values of the case definition (XmlSource takes it as its ValueEvaluator).
+class ExpressionEvaluator : public model::ValueEvaluator {
 public:
     /// Defines or overwrites a variable. `constant` ones cannot be changed later (setvar
     /// on a constant is an error).
@@ -41,7 +40,7 @@ public:
     void setGrid(Vec3d origin, double dp);
 
     /// Evaluates `text` (without a leading '#').
-    double evaluate(const std::string& text) const;
+    double evaluate(const std::string& text) const override;
 
 private:
     struct Variable { double value; bool constant; };

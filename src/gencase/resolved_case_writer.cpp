@@ -3,13 +3,18 @@
 #include "gencase/resolved_case_writer.h"
 
 #include <chrono>
-#include <cstdio>
 #include <ctime>
 #include <string>
 #include <filesystem>
 #include <ostream>
 #include <vector>
 
+#include "case/case_constants.h"
+#include "case/gauge_spec.h"
+#include "case/mk_blocks.h"
+#include "case/motion_xml.h"
+#include "case/parameters.h"
+#include "case/solid_body.h"
 #include "core/error.h"
 #include "core/version.h"
 #include "io/case_h5.h"
@@ -20,75 +25,6 @@ namespace seaspring::gencase {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string fmt(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-void setXyz(pugi::xml_node n, Vec3d v) {
-    n.append_attribute("x") = fmt(v.x).c_str();
-    n.append_attribute("y") = fmt(v.y).c_str();
-    n.append_attribute("z") = fmt(v.z).c_str();
-}
-
-void appendParticles(pugi::xml_node exec, const GeneratedCase& g) {
-    pugi::xml_node parts = exec.append_child("particles");
-    parts.append_attribute("np") = std::to_string(g.particles.size()).c_str();
-    parts.append_attribute("nfixed") = std::to_string(g.count(ParticleType::Fixed)).c_str();
-    parts.append_attribute("nmoving") = std::to_string(g.count(ParticleType::Moving)).c_str();
-    parts.append_attribute("nsolid") = std::to_string(g.count(ParticleType::Solid)).c_str();
-    parts.append_attribute("nfluid") = std::to_string(g.count(ParticleType::Fluid)).c_str();
-    parts.append_attribute("mkboundfirst") = g.mkconfig.fluidcount + 1;
-    parts.append_attribute("mkfluidfirst") = 1;
-    for (const MkBlock& b : g.blocks) {
-        pugi::xml_node n = parts.append_child(particleTypeName(b.type));
-        n.append_attribute("mk") = b.mk;
-        n.append_attribute(b.type == ParticleType::Fluid ? "mkfluid" : "mkbound") = b.mk_user;
-        n.append_attribute("begin") = std::to_string(b.begin).c_str();
-        n.append_attribute("count") = std::to_string(b.count).c_str();
-    }
-}
-
-void appendSolids(pugi::xml_node exec, const GeneratedCase& g) {
-    if (g.solids.empty()) return;
-    pugi::xml_node v = exec.append_child("vcpmsolids");
-    v.append_attribute("particles") = std::to_string(g.bond_stats.solid_particles).c_str();
-    v.append_attribute("bonds") = std::to_string(g.bond_stats.bonds).c_str();
-    v.append_attribute("clampbonds") = std::to_string(g.bond_stats.clamp_bonds).c_str();
-    v.append_attribute("surface") = std::to_string(g.bond_stats.surface_particles).c_str();
-    v.append_attribute("bondslots") = std::to_string(g.bonds.bondSlots()).c_str();
-    for (const SolidSpec& s : g.solids) {
-        pugi::xml_node n = v.append_child("solid");
-        n.append_attribute("mkbound") = s.mkbound;
-        n.append_attribute("mk") = s.mk;
-        std::string clamps;
-        for (int c : s.clamp_mkbound) clamps += (clamps.empty() ? "" : ",") + std::to_string(c);
-        n.append_attribute("mkclamp") = clamps.c_str();
-        n.append_attribute("density") = fmt(s.density).c_str();
-        n.append_attribute("youngmod") = fmt(s.youngmod).c_str();
-        n.append_attribute("poissratio") = fmt(s.poissratio).c_str();
-        n.append_attribute("critstretch") = fmt(s.critstretch).c_str();
-        n.append_attribute("damping") = fmt(s.damping).c_str();
-        n.append_attribute("declaredin") = s.declared_in.c_str();
-        for (const PointLoad& l : s.loads) {
-            pugi::xml_node p = n.append_child("pointload");
-            p.append_attribute("x") = fmt(l.x).c_str();
-            p.append_attribute("y") = fmt(l.y).c_str();
-            p.append_attribute("z") = fmt(l.z).c_str();
-            p.append_attribute("fx") = fmt(l.fx).c_str();
-            p.append_attribute("fy") = fmt(l.fy).c_str();
-            p.append_attribute("fz") = fmt(l.fz).c_str();
-            p.append_attribute("ratex") = fmt(l.ratex).c_str();
-            p.append_attribute("ratey") = fmt(l.ratey).c_str();
-            p.append_attribute("ratez") = fmt(l.ratez).c_str();
-        }
-        const auto it = g.bond_stats.particles_per_mk.find(s.mk);
-        n.append_attribute("particles") =
-            std::to_string(it == g.bond_stats.particles_per_mk.end() ? 0 : it->second).c_str();
-    }
-}
 
 std::string today() {
     const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -120,21 +56,17 @@ void buildResolvedCase(pugi::xml_document& doc, const XmlSource& src, const Gene
             if (std::string(c.name()) == "_gauges") copy.remove_child(c);
             c = next;
         }
-        if (!g.gauges.empty()) writeGauges(g.gauges, copy);
+        if (!g.gauges.empty()) model::writeGauges(g.gauges, copy);
     }
-    pugi::xml_node params = exec.append_child("parameters");
-    for (const auto& [key, value] : g.parameters) {
-        pugi::xml_node p = params.append_child("parameter");
-        p.append_attribute("key") = key.c_str();
-        p.append_attribute("value") = value.c_str();
+    model::writeParameters(exec, g.parameters, g.domain);
+    model::writeConstants(exec, g.constants);
+    model::writeParticleBlocks(exec, g.blocks, g.mkconfig.fluidcount + 1);
+    if (!g.motion.empty()) model::writeMotion(g.motion, exec);
+    if (!g.solids.empty()) {
+        const model::SolidTotals totals{g.bond_stats.solid_particles, g.bond_stats.bonds, g.bond_stats.clamp_bonds,
+                                        g.bond_stats.surface_particles, g.bonds.bondSlots()};
+        model::writeSolids(exec, g.solids, totals);
     }
-    pugi::xml_node dom = params.append_child("simulationdomain");
-    setXyz(dom.append_child("posmin"), g.domain.min);
-    setXyz(dom.append_child("posmax"), g.domain.max);
-    writeConstants(exec, g.constants);
-    appendParticles(exec, g);
-    if (!g.motion.empty()) writeMotion(g.motion, exec);
-    appendSolids(exec, g);
     pugi::xml_node files = exec.append_child("files");
     files.append_attribute("particles") = particles_file.c_str();
 }

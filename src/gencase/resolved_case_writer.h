@@ -2,7 +2,8 @@
 /// \file resolved_case_writer.h
 /// \brief Writes gencase's outputs: the resolved case OUTDIR/NAME.xml (definition, derived
 ///        constants, parameters with defaults, particle blocks, motion, solids, domain), the
-///        particles OUTDIR/NAME.h5 and optionally a ParaView preview OUTDIR/NAME.vtu.
+///        particles OUTDIR/NAME.h5 and optionally a ParaView preview OUTDIR/NAME.vtu. The
+///        sections of the case model are written by its writers (src/case).
 #pragma once
 
 #include <iosfwd>

@@ -7,6 +7,8 @@
 
 namespace seaspring::gencase {
 
+using model::parseNumber;
+
 namespace {
 
 std::string stripSpaces(const std::string& s) {

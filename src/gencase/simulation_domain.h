@@ -7,16 +7,15 @@
 
 #include <pugixml.hpp>
 
+#include "case/parameters.h"
+#include "case/xml_source.h"
 #include "core/vec3.h"
 #include "gencase/expression.h"
-#include "gencase/xml_source.h"
 
 namespace seaspring::gencase {
 
-struct DomainBox {
-    Vec3d min{0, 0, 0};
-    Vec3d max{0, 0, 0};
-};
+using model::DomainBox;
+using model::XmlSource;
 
 /// `node` may be empty (then the domain is the bounding box). Percentages are of the
 /// bounding box size along that axis.

@@ -28,7 +28,7 @@ std::string trimAll(std::string s) {
     return s;
 }
 
-void validate(const XmlSource& src, pugi::xml_node n, SolidSpec& s, const MkConfig& mk) {
+void validate(const XmlSource& src, pugi::xml_node n, SolidBody& s, const MkConfig& mk) {
     auto bad = [&](const std::string& what) { src.fail(n, what); };
     if (s.mkbound < 0 || s.mkbound >= mk.boundcount)
         bad("mkbound=" + std::to_string(s.mkbound) + ": expected 0.." + std::to_string(mk.boundcount - 1));
@@ -73,17 +73,17 @@ std::vector<int> parseMkList(const XmlSource& src, pugi::xml_node node, const ch
     return out;
 }
 
-std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
+std::vector<SolidBody> parseSolids(const XmlSource& src, pugi::xml_node special,
                                    const ExpressionEvaluator& ev, const MkConfig& mk,
                                    std::ostream& log) {
-    std::vector<SolidSpec> solids;
+    std::vector<SolidBody> solids;
     if (pugi::xml_node v = special.child("vcpmsolids")) {
         src.checkChildren(v, {"solid"});
         src.checkAttributes(v, {});
         for (pugi::xml_node n : v.children("solid")) {
             src.checkAttributes(n, {"mkbound", "mkclamp", "density", "youngmod", "poissratio",
                                     "critstretch", "tensilestrength", "damping"});
-            SolidSpec s;
+            SolidBody s;
             s.line = src.lineOf(n);
             s.declared_in = "vcpmsolids";
             s.mkbound = src.integer(n, "mkbound", ev);
@@ -111,15 +111,15 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
                 src.checkAttributes(l, {"x", "y", "z", "fx", "fy", "fz", "ratex", "ratey", "ratez"});
                 PointLoad p;
                 p.line = src.lineOf(l);
-                p.x = src.number(l, "x", ev);
-                p.y = src.number(l, "y", ev);
-                p.z = src.number(l, "z", ev);
-                p.fx = src.number(l, "fx", ev, 0.0);
-                p.fy = src.number(l, "fy", ev, 0.0);
-                p.fz = src.number(l, "fz", ev, 0.0);
-                p.ratex = src.number(l, "ratex", ev, 0.0);
-                p.ratey = src.number(l, "ratey", ev, 0.0);
-                p.ratez = src.number(l, "ratez", ev, 0.0);
+                p.point.x = src.number(l, "x", ev);
+                p.point.y = src.number(l, "y", ev);
+                p.point.z = src.number(l, "z", ev);
+                p.force.x = src.number(l, "fx", ev, 0.0);
+                p.force.y = src.number(l, "fy", ev, 0.0);
+                p.force.z = src.number(l, "fz", ev, 0.0);
+                p.rate.x = src.number(l, "ratex", ev, 0.0);
+                p.rate.y = src.number(l, "ratey", ev, 0.0);
+                p.rate.z = src.number(l, "ratez", ev, 0.0);
                 s.loads.push_back(p);
             }
             validate(src, n, s, mk);
@@ -132,7 +132,7 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
         for (pugi::xml_node n : f.children("flexstrucbody")) {
             src.checkAttributes(n, {"mkbound", "mkclamp"});
             src.checkChildren(n, {"density", "youngmod", "poissratio", "constitmodel", "hgfactor"});
-            SolidSpec s;
+            SolidBody s;
             s.line = src.lineOf(n);
             s.declared_in = "flexstrucs";
             s.mkbound = src.integer(n, "mkbound", ev);
@@ -154,8 +154,8 @@ std::vector<SolidSpec> parseSolids(const XmlSource& src, pugi::xml_node special,
                 throwInputError(src.path(), solids[i].line,
                                 "solid mkbound=" + std::to_string(solids[i].mkbound) +
                                     " is declared twice (first at line " + std::to_string(solids[j].line) + ")");
-    for (const SolidSpec& s : solids)
-        for (const SolidSpec& o : solids)
+    for (const SolidBody& s : solids)
+        for (const SolidBody& o : solids)
             if (std::find(s.clamp_mkbound.begin(), s.clamp_mkbound.end(), o.mkbound) != s.clamp_mkbound.end())
                 throwInputError(src.path(), s.line,
                                 "mkclamp " + std::to_string(o.mkbound) +

@@ -14,8 +14,8 @@
 namespace seaspring::solver {
 
 namespace fs = std::filesystem;
-using gencase::GaugeKind;
-using gencase::GaugeSpec;
+using model::GaugeKind;
+using model::GaugeSpec;
 
 namespace {
 constexpr double kNever = 1e300;
@@ -71,11 +71,11 @@ struct GaugeSystem::Item {
 
 GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log)
     : massfluid_(c.constants.massfluid), dim_(c.constants.dimensions), domain_minz_(c.domain_min.z) {
-    const gencase::GaugeSet& set = c.gauges;
+    const model::GaugeSet& set = c.gauges;
     const double tout = c.params.time_out;
     const physics::CellGrid& g = s.grid;
     auto fail = [&](const GaugeSpec& sp, const std::string& msg) {
-        throwInputError(c.xml_path, sp.line, "<" + std::string(gencase::gaugeElementName(sp.kind)) + " name=\"" +
+        throwInputError(c.xml_path, sp.line, "<" + std::string(model::gaugeElementName(sp.kind)) + " name=\"" +
                                                  sp.name + "\">: " + msg);
     };
     // A point's PosCell; 2D points are moved onto the particles' plane. Points outside the
@@ -93,7 +93,7 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
         auto it = std::make_unique<Item>();
         Item& item = *it;
         item.spec = sp;
-        const gencase::GaugeTiming &own = sp.timing, &def = set.defaults;
+        const model::GaugeTiming &own = sp.timing, &def = set.defaults;
         item.computedt = own.computedt.value_or(def.computedt.value_or(tout));
         item.cstart = own.compute_start.value_or(def.compute_start.value_or(0.0));
         item.cend = own.compute_end.value_or(def.compute_end.value_or(kNever));

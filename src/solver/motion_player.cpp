@@ -13,10 +13,10 @@
 
 namespace seaspring::solver {
 
-using gencase::MotionObject;
-using gencase::MotionTable;
-using gencase::Movement;
-using gencase::MovementKind;
+using model::MotionObject;
+using model::MotionTable;
+using model::Movement;
+using model::MovementKind;
 
 namespace {
 

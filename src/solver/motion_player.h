@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file motion_player.h
 /// \brief Prescribed boundary motion as a pure function of time: the rigid transform of a
-///        motion object (gencase::MotionObject) at time t relative to its pose at t = 0.
+///        motion object (model::MotionObject) at time t relative to its pose at t = 0.
 ///
 /// The result depends on `time` only (no state carried between calls) and uses closed forms
 /// for every analytic movement, so the solver can ask for any instant in any order, e.g. the
@@ -55,7 +55,7 @@
 #pragma once
 
 #include "core/vec3.h"
-#include "gencase/motion.h"
+#include "case/motion.h"
 
 namespace seaspring::solver {
 
@@ -80,6 +80,6 @@ RigidTransform axisRotation(const Vec3d& p1, const Vec3d& p2, double angle);
 /// motion): x(time) = R x0 + t for every particle of the object, x0 its position at time 0.
 /// Throws seaspring::Error (naming the object's line) for a chain that loops through
 /// movements of zero total duration, which never advances in time.
-RigidTransform motionTransformAt(const gencase::MotionObject& obj, double time);
+RigidTransform motionTransformAt(const model::MotionObject& obj, double time);
 
 }  // namespace seaspring::solver

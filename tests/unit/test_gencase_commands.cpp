@@ -49,7 +49,7 @@ TEST(GencaseCommands, TankWithWaterCountsAndMkNumbering) {
     EXPECT_EQ(g.count(ParticleType::Fixed), 195u);
     ASSERT_EQ(g.blocks.size(), 2u);
     EXPECT_EQ(g.blocks[0].mk, 10);  // mkbound 0 -> 0 + fluidcount(9) + 1
-    EXPECT_EQ(g.blocks[0].mk_user, 0);
+    EXPECT_EQ(g.blocks[0].mk_local, 0);
     EXPECT_EQ(g.blocks[1].mk, 1);   // mkfluid 0 -> 1
     EXPECT_EQ(g.blocks[1].begin, 195u);
     for (std::size_t i = 0; i < g.particles.size(); ++i) EXPECT_EQ(g.particles.id[i], i);

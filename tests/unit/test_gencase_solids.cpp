@@ -124,7 +124,7 @@ TEST(GencaseSolids, CantileverTypesMassesAndBondCounts) {
     // Order fixed, solid, fluid: the beam (mk 1 + 9 + 1 = 11) takes ids 32..51.
     EXPECT_EQ(g.blocks[1].type, ParticleType::Solid);
     EXPECT_EQ(g.blocks[1].mk, 11);
-    EXPECT_EQ(g.blocks[1].mk_user, 1);
+    EXPECT_EQ(g.blocks[1].mk_local, 1);
     EXPECT_EQ(g.blocks[1].begin, 32u);
     EXPECT_EQ(g.blocks[1].count, 20u);
     EXPECT_EQ(g.bonds.first_solid, 32u);
@@ -137,7 +137,7 @@ TEST(GencaseSolids, CantileverTypesMassesAndBondCounts) {
     }
 
     ASSERT_EQ(g.solids.size(), 1u);
-    const SolidSpec& s = g.solids[0];
+    const SolidBody& s = g.solids[0];
     EXPECT_EQ(s.mkbound, 1);
     EXPECT_EQ(s.mk, 11);
     EXPECT_EQ(s.clamp_mkbound, std::vector<int>{0});

@@ -14,11 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "case/motion_xml.h"
 #include "core/error.h"
 #include "gencase/motion.h"
 
 using namespace seaspring;
 using namespace seaspring::gencase;
+using namespace seaspring::model;
 
 namespace {
 
@@ -469,10 +471,10 @@ TEST(Motion, DataFileErrors) {
 
 #include <sstream>
 
-#include "gencase/motion_table.h"
+#include "case/motion_table.h"
 
 TEST(MotionTable, HeaderOnlyWhenTheFirstLineHasNoNumber) {
-    using namespace seaspring::gencase;
+    using namespace seaspring::model;
     TableSpec spec;
     spec.name = "data.csv";
     spec.expect = "2 columns: time, value";

@@ -17,16 +17,17 @@
 #include <vector>
 
 #include "core/error.h"
+#include "case/motion.h"
+#include "case/xml_source.h"
 #include "gencase/motion.h"
-#include "gencase/xml_source.h"
 #include "solver/motion_player.h"
 #include "gencase_test_util.h"
 
 using namespace seaspring;
 using namespace seaspring::solver;
-using gencase::MotionObject;
-using gencase::Movement;
-using gencase::MovementKind;
+using model::MotionObject;
+using model::Movement;
+using model::MovementKind;
 
 namespace {
 
@@ -504,8 +505,8 @@ TEST(MotionPlayer, ParsedMvrotInDegreesUsesTheDualSphysicsSense) {
     </mvrot>
   </objreal>
 </motion>)");
-    const gencase::XmlSource src(path);
-    const gencase::MotionSet set = gencase::parseMotion(src, src.root(), {});
+    const model::XmlSource src(path);
+    const model::MotionSet set = gencase::parseMotion(src, src.root(), {});
     ASSERT_EQ(set.objects.size(), 1u);
     // 90 deg/s for 1 s: (1,0,0) -> (0,-1,0).
     expectNear(motionTransformAt(set.objects[0], 1.5).apply({1, 0, 0}), {0, -1, 0}, kTol, "90");

@@ -271,10 +271,21 @@ TEST(SolverCase, MovingBoundarySolidAndGauges) {
     EXPECT_EQ(c.bonds->solidCount(), 12u);
     EXPECT_EQ(c.bonds->bondSlots(), g.g.bonds.bondSlots());
     EXPECT_EQ(c.solid_bodies, 1u);
+    // The same SolidBody gencase wrote (the case model's), read back.
+    ASSERT_EQ(c.solids.size(), 1u);
+    ASSERT_EQ(g.g.solids.size(), 1u);
+    EXPECT_EQ(c.solids[0].mkbound, 2);
+    EXPECT_EQ(c.solids[0].mk, g.g.solids[0].mk);
+    EXPECT_EQ(c.solids[0].clamp_mkbound, std::vector<int>{3});
+    EXPECT_EQ(c.solids[0].clamp_mk, g.g.solids[0].clamp_mk);
+    EXPECT_EQ(c.solids[0].youngmod, 3e6);
+    EXPECT_EQ(c.solids[0].declared_in, "vcpmsolids");
+    EXPECT_EQ(c.solids[0].particles, 12u);
+    EXPECT_EQ(g.g.solids[0].particles, 12u);
     // The gauges as gencase resolved them (expression evaluated) are read back.
     EXPECT_TRUE(c.notes.empty());
     ASSERT_EQ(c.gauges.gauges.size(), 1u);
-    EXPECT_EQ(c.gauges.gauges[0].kind, gencase::GaugeKind::Velocity);
+    EXPECT_EQ(c.gauges.gauges[0].kind, model::GaugeKind::Velocity);
     EXPECT_EQ(c.gauges.gauges[0].name, "V");
     EXPECT_EQ(c.gauges.gauges[0].point.x, 0.25);
     EXPECT_EQ(c.gauges.defaults.output, std::optional<bool>(true));
@@ -510,6 +521,10 @@ TEST(SolverCaseErrors, Domain) {
                                 " <simulationdomain> posmin (0, 0, -0.2) must lie below posmax");
     e = edit(pool(), posmax, "<posmax x=\"default\"");
     expectContains(e.error, e.at("<posmax") + " <posmax> attribute x=\"default\"");
+    // The resolved case holds plain numbers: an expression is an error, not evaluated.
+    e = edit(pool(), posmax, "<posmax x=\"#0.2*2\"");
+    expectContains(e.error, e.at("<posmax") + " <posmax> attribute x=\"#0.2*2\": '#0.2*2': the resolved case "
+                                              "holds plain numbers");
 }
 
 TEST(SolverCaseErrors, MovingBlockWithoutMotionAndSolidSummary) {

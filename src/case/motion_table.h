@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "gencase/motion.h"
+#include "case/motion.h"
 
-namespace seaspring::gencase {
+namespace seaspring::model {
 
 /// Text of a double: 17 digits (exact round trip through strtod) or fewer for messages.
 inline std::string num(double v, int digits = 15) {
@@ -49,4 +49,4 @@ struct TableSpec {
 /// Errors name the data file and its line.
 MotionTable readTable(std::istream& in, const TableSpec& s);
 
-}  // namespace seaspring::gencase
+}  // namespace seaspring::model

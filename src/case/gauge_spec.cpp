@@ -1,12 +1,12 @@
 // SeaSpring — MIT licence.
 /// \file gauge_spec.cpp
-#include "gencase/gauge_spec.h"
+#include "case/gauge_spec.h"
 
 #include <cctype>
 #include <cstdio>
 #include <set>
 
-namespace seaspring::gencase {
+namespace seaspring::model {
 
 namespace {
 
@@ -34,7 +34,7 @@ bool isTimingChild(const std::string& n) {
 }
 
 /// Reads a time-interval `<computedt value>` (>= 0).
-double readInterval(const XmlSource& src, pugi::xml_node n, const ExpressionEvaluator& ev) {
+double readInterval(const XmlSource& src, pugi::xml_node n, const ValueEvaluator& ev) {
     src.checkAttributes(n, {"value"});
     const double v = src.number(n, "value", ev);
     if (!(v >= 0)) src.fail(n, "value=\"" + std::string(n.attribute("value").value()) + "\": must be >= 0 [s]");
@@ -42,7 +42,7 @@ double readInterval(const XmlSource& src, pugi::xml_node n, const ExpressionEval
 }
 
 /// `<computetime|outputtime start= end=>`: either may be absent.
-void readWindow(const XmlSource& src, pugi::xml_node n, const ExpressionEvaluator& ev,
+void readWindow(const XmlSource& src, pugi::xml_node n, const ValueEvaluator& ev,
                 std::optional<double>& start, std::optional<double>& end) {
     src.checkAttributes(n, {"start", "end"});
     if (n.attribute("start")) start = src.number(n, "start", ev);
@@ -53,7 +53,7 @@ void readWindow(const XmlSource& src, pugi::xml_node n, const ExpressionEvaluato
 }
 
 /// The timing children of a gauge or of <default> (others are left to the caller).
-void readTiming(const XmlSource& src, pugi::xml_node node, const ExpressionEvaluator& ev, GaugeTiming& t) {
+void readTiming(const XmlSource& src, pugi::xml_node node, const ValueEvaluator& ev, GaugeTiming& t) {
     src.checkUnique(node, {"savevtkpart", "computedt", "computetime", "output", "outputdt", "outputtime"});
     for (pugi::xml_node c : node.children()) {
         if (c.type() != pugi::node_element || XmlSource::isDisabled(c)) continue;
@@ -75,7 +75,7 @@ void readTiming(const XmlSource& src, pugi::xml_node node, const ExpressionEvalu
 }
 
 /// A length given as value=, coefdp= (times dp) or coefh= (times h, where `allow_h`).
-double readLength(const XmlSource& src, pugi::xml_node n, const ExpressionEvaluator& ev, double dp, double h,
+double readLength(const XmlSource& src, pugi::xml_node n, const ValueEvaluator& ev, double dp, double h,
                   bool allow_h) {
     if (allow_h) src.checkAttributes(n, {"value", "coefdp", "coefh"});
     else src.checkAttributes(n, {"value", "coefdp"});
@@ -100,7 +100,7 @@ void checkName(const XmlSource& src, pugi::xml_node n, const std::string& name, 
     if (!seen.insert(name).second) src.fail(n, "name=\"" + name + "\" is used by another gauge");
 }
 
-GaugeSpec readGauge(const XmlSource& src, pugi::xml_node n, GaugeKind kind, const ExpressionEvaluator& ev,
+GaugeSpec readGauge(const XmlSource& src, pugi::xml_node n, GaugeKind kind, const ValueEvaluator& ev,
                     double dp, double h) {
     GaugeSpec g;
     g.kind = kind;
@@ -220,7 +220,7 @@ const char* gaugeElementName(GaugeKind k) {
     return "?";
 }
 
-GaugeSet parseGauges(const XmlSource& src, pugi::xml_node gauges, const ExpressionEvaluator& ev, double dp,
+GaugeSet parseGauges(const XmlSource& src, pugi::xml_node gauges, const ValueEvaluator& ev, double dp,
                      double h) {
     GaugeSet set;
     if (!gauges) return set;
@@ -250,6 +250,10 @@ GaugeSet parseGauges(const XmlSource& src, pugi::xml_node gauges, const Expressi
         set.gauges.push_back(std::move(g));
     }
     return set;
+}
+
+GaugeSet readGauges(const XmlSource& src, pugi::xml_node gauges, double dp, double h) {
+    return parseGauges(src, gauges, PlainNumbers{}, dp, h);
 }
 
 void writeGauges(const GaugeSet& set, pugi::xml_node parent) {
@@ -289,4 +293,4 @@ void writeGauges(const GaugeSet& set, pugi::xml_node parent) {
     }
 }
 
-}  // namespace seaspring::gencase
+}  // namespace seaspring::model

@@ -1,6 +1,6 @@
 // SeaSpring — MIT licence.
 /// \file xml_source.cpp
-#include "gencase/xml_source.h"
+#include "case/xml_source.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 
-namespace seaspring::gencase {
+namespace seaspring::model {
 
 namespace {
 
@@ -30,15 +30,19 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
+double PlainNumbers::evaluate(const std::string& text) const {
+    throw ValueError("'#" + text + "': the resolved case holds plain numbers, not expressions (gencase writes them evaluated)");
+}
+
 double parseNumber(const std::string& text) {
     const std::string t = trim(text);
-    if (t.empty()) throw ExpressionError("empty value where a number was expected");
+    if (t.empty()) throw ValueError("empty value where a number was expected");
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
     if (end != t.c_str() + t.size())
-        throw ExpressionError("'" + t + "' is not a number (write '#" + t +
+        throw ValueError("'" + t + "' is not a number (write '#" + t +
                               "' for an expression)");
-    if (!std::isfinite(v)) throw ExpressionError("'" + t + "' is not a finite number");
+    if (!std::isfinite(v)) throw ValueError("'" + t + "' is not a finite number");
     return v;
 }
 
@@ -82,26 +86,26 @@ void XmlSource::fail(pugi::xml_node node, const std::string& message) const {
 }
 
 double XmlSource::number(pugi::xml_node node, const char* attr,
-                         const ExpressionEvaluator& ev) const {
+                         const ValueEvaluator& ev) const {
     const pugi::xml_attribute a = node.attribute(attr);
     if (!a) fail(node, std::string("requires attribute '") + attr + "' (a number)");
     const std::string raw = trim(a.value());
     try {
         if (!raw.empty() && raw[0] == '#') return ev.evaluate(raw.substr(1));
         return parseNumber(raw);
-    } catch (const ExpressionError& e) {
+    } catch (const ValueError& e) {
         fail(node, std::string("attribute ") + attr + "=\"" + raw + "\": " + e.what());
     }
 }
 
-double XmlSource::number(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev,
+double XmlSource::number(pugi::xml_node node, const char* attr, const ValueEvaluator& ev,
                          double fallback) const {
     if (!node.attribute(attr)) return fallback;
     return number(node, attr, ev);
 }
 
 int XmlSource::integer(pugi::xml_node node, const char* attr,
-                       const ExpressionEvaluator& ev) const {
+                       const ValueEvaluator& ev) const {
     const double v = number(node, attr, ev);
     if (v != std::floor(v) || std::fabs(v) > 2.0e9)
         fail(node, std::string("attribute ") + attr + "=\"" + node.attribute(attr).value() +
@@ -109,10 +113,20 @@ int XmlSource::integer(pugi::xml_node node, const char* attr,
     return static_cast<int>(v);
 }
 
-int XmlSource::integer(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev,
+int XmlSource::integer(pugi::xml_node node, const char* attr, const ValueEvaluator& ev,
                        int fallback) const {
     if (!node.attribute(attr)) return fallback;
     return integer(node, attr, ev);
+}
+
+std::uint32_t XmlSource::count(pugi::xml_node node, const char* attr, std::uint32_t max) const {
+    const std::string t = text(node, attr);
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(t.c_str(), &end, 10);
+    if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || *end || v > max)
+        fail(node, std::string("attribute ") + attr + "=\"" + t + "\": expected an integer in 0.." +
+                       std::to_string(max));
+    return std::uint32_t(v);
 }
 
 bool XmlSource::boolean(pugi::xml_node node, const char* attr, bool fallback) const {
@@ -137,7 +151,7 @@ std::string XmlSource::text(pugi::xml_node node, const char* attr,
     return a ? std::string(a.value()) : fallback;
 }
 
-Vec3d XmlSource::vec3(pugi::xml_node node, const ExpressionEvaluator& ev) const {
+Vec3d XmlSource::vec3(pugi::xml_node node, const ValueEvaluator& ev) const {
     return {number(node, "x", ev), number(node, "y", ev), number(node, "z", ev)};
 }
 
@@ -197,4 +211,4 @@ void XmlSource::checkUnique(pugi::xml_node node, std::initializer_list<const cha
     }
 }
 
-}  // namespace seaspring::gencase
+}  // namespace seaspring::model

@@ -1,12 +1,12 @@
 // SeaSpring — MIT licence.
 /// \file motion_table.cpp
-#include "gencase/motion_table.h"
+#include "case/motion_table.h"
 
 #include <cctype>
 
 #include "core/error.h"
 
-namespace seaspring::gencase {
+namespace seaspring::model {
 
 /// Splits a data row: fields are separated by blanks and/or one ';' or ','. Two hard
 /// separators in a row (or one at the start) give an empty field; one at the end is allowed.
@@ -79,4 +79,4 @@ MotionTable readTable(std::istream& in, const TableSpec& s) {
     return t;
 }
 
-}  // namespace seaspring::gencase
+}  // namespace seaspring::model

@@ -5,7 +5,7 @@
 ///
 /// gencase reads the definition (expressions allowed, coefdp/coefh turned into lengths) and
 /// writes the gauges into the resolved case in the same syntax with plain numbers
-/// (writeGauges); the solver reads that back with the same parser. Each gauge may override
+/// (writeGauges); the solver reads that back with the same parser (readGauges). Each gauge may override
 /// the `<default>` timing (computedt, computetime, output, outputdt, outputtime; unset: the
 /// DualSPHysics defaults, TimeOut and the whole run, output off).
 #pragma once
@@ -16,11 +16,10 @@
 
 #include <pugixml.hpp>
 
+#include "case/xml_source.h"
 #include "core/vec3.h"
-#include "gencase/expression.h"
-#include "gencase/xml_source.h"
 
-namespace seaspring::gencase {
+namespace seaspring::model {
 
 enum class GaugeKind { Velocity, Pressure, Swl, MaxZ, Force, SolidMarker };
 
@@ -60,10 +59,12 @@ struct GaugeSet {
 
 /// Reads `<gauges>` (absent node: empty set). `dp` and `h` turn coefdp/coefh into lengths.
 /// Errors name the file, line, element and value.
-GaugeSet parseGauges(const XmlSource& src, pugi::xml_node gauges, const ExpressionEvaluator& ev, double dp,
+GaugeSet parseGauges(const XmlSource& src, pugi::xml_node gauges, const ValueEvaluator& ev, double dp,
                      double h);
+/// parseGauges on the resolved case (plain numbers).
+GaugeSet readGauges(const XmlSource& src, pugi::xml_node gauges, double dp, double h);
 
 /// Writes `set` as a `<gauges>` child of `parent` (plain numbers, lengths resolved).
 void writeGauges(const GaugeSet& set, pugi::xml_node parent);
 
-}  // namespace seaspring::gencase
+}  // namespace seaspring::model

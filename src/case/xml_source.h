@@ -2,18 +2,45 @@
 /// \file xml_source.h
 /// \brief A loaded XML file that knows the line of every node, and typed attribute
 ///        access that reports errors as "file:line: <element> attribute 'a': ...".
+///
+/// Both case files are read through it: gencase's definition (CASE_Def.xml, whose values
+/// may be GenCase expressions "#...", evaluated by gencase's ExpressionEvaluator) and the
+/// resolved case (plain numbers only: PlainNumbers).
 #pragma once
 
+#include <cstdint>
 #include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <pugixml.hpp>
 
 #include "core/vec3.h"
-#include "gencase/expression.h"
 
-namespace seaspring::gencase {
+namespace seaspring::model {
+
+/// Raised for a value that is not a number, or an expression that cannot be evaluated. The
+/// message names the value and the problem; callers add file:line.
+class ValueError : public std::runtime_error {
+public:
+    explicit ValueError(const std::string& m) : std::runtime_error(m) {}
+};
+
+/// Evaluates the values written "#..." in a case file (without the '#').
+class ValueEvaluator {
+public:
+    virtual ~ValueEvaluator() = default;
+    /// The value of `text`; throws ValueError when it cannot be evaluated.
+    virtual double evaluate(const std::string& text) const = 0;
+};
+
+/// The evaluator of the resolved case: it holds plain numbers only (gencase evaluates the
+/// expressions of the definition), so any "#..." value is an error.
+class PlainNumbers : public ValueEvaluator {
+public:
+    double evaluate(const std::string& text) const override;
+};
 
 class XmlSource {
 public:
@@ -35,20 +62,22 @@ public:
 
     /// Numeric attribute; a value starting with '#' is an expression evaluated with `ev`.
     /// Missing attribute -> error (required) or `fallback`.
-    double number(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev) const;
-    double number(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev,
+    double number(pugi::xml_node node, const char* attr, const ValueEvaluator& ev) const;
+    double number(pugi::xml_node node, const char* attr, const ValueEvaluator& ev,
                   double fallback) const;
     /// Integer attribute (the value must be integral).
-    int integer(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev) const;
-    int integer(pugi::xml_node node, const char* attr, const ExpressionEvaluator& ev,
+    int integer(pugi::xml_node node, const char* attr, const ValueEvaluator& ev) const;
+    int integer(pugi::xml_node node, const char* attr, const ValueEvaluator& ev,
                 int fallback) const;
+    /// Non-negative integer attribute written as plain digits, at most `max` (required).
+    std::uint32_t count(pugi::xml_node node, const char* attr, std::uint32_t max = 0xffffffffu) const;
     /// Boolean attribute: true/false/1/0 (case-insensitive).
     bool boolean(pugi::xml_node node, const char* attr, bool fallback) const;
     /// String attribute; required unless a fallback is given.
     std::string text(pugi::xml_node node, const char* attr) const;
     std::string text(pugi::xml_node node, const char* attr, const std::string& fallback) const;
     /// Reads attributes x, y, z of `node` (each required unless `fallback` given).
-    Vec3d vec3(pugi::xml_node node, const ExpressionEvaluator& ev) const;
+    Vec3d vec3(pugi::xml_node node, const ValueEvaluator& ev) const;
     /// The single required child `name` of `node`.
     pugi::xml_node child(pugi::xml_node node, const char* name) const;
 
@@ -71,7 +100,7 @@ private:
     std::vector<std::size_t> line_starts_;  ///< byte offset where each line starts
 };
 
-/// Parses a number written in the file; throws ExpressionError if it is not one.
+/// Parses a number written in the file; throws ValueError if it is not one.
 double parseNumber(const std::string& text);
 
-}  // namespace seaspring::gencase
+}  // namespace seaspring::model
