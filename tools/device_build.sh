@@ -36,7 +36,10 @@ mkdir -p "$build/shared"
 cp -r "$root/../shared/validation-data" "$root/../shared/dualsphysics-cases" "$build/shared/"
 if [[ $tests == ON ]]; then
   # ctest's files hold absolute paths of this machine: device_test.sh recreates them there.
-  (cd "$build" && tar --exclude='*.o' --exclude='*.a' --exclude='*.tar.xz' --exclude='./validation' -cJf tests.tar.xz .)
+  tmp="$(mktemp -d)"
+  (cd "$build" && tar --exclude='*.o' --exclude='*.a' --exclude='./tests.tar.xz' --exclude='./validation' \
+    --exclude='./base' -cJf "$tmp/tests.tar.xz" .)
+  mv "$tmp/tests.tar.xz" "$build/tests.tar.xz" && rmdir "$tmp"
   echo "$root" >"$build/tests.root"
   du -sh "$build/tests.tar.xz"
 fi

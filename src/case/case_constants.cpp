@@ -4,30 +4,21 @@
 
 #include <cstdio>
 #include <string>
+#include "core/format.h"
 
 namespace seaspring::model {
-
-namespace {
-
-std::string fmt(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-}  // namespace
 
 void writeConstants(pugi::xml_node parent, const CaseConstants& c) {
     pugi::xml_node n = parent.append_child("constants");
     auto value = [&](const char* name, double v) {
-        n.append_child(name).append_attribute("value") = fmt(v).c_str();
+        n.append_child(name).append_attribute("value") = exactText(v).c_str();
     };
     n.append_child("dimensions").append_attribute("value") = c.dimensions;
     value("dp", c.dp);
     pugi::xml_node gr = n.append_child("gravity");
-    gr.append_attribute("x") = fmt(c.gravity.x).c_str();
-    gr.append_attribute("y") = fmt(c.gravity.y).c_str();
-    gr.append_attribute("z") = fmt(c.gravity.z).c_str();
+    gr.append_attribute("x") = exactText(c.gravity.x).c_str();
+    gr.append_attribute("y") = exactText(c.gravity.y).c_str();
+    gr.append_attribute("z") = exactText(c.gravity.z).c_str();
     value("rhop0", c.rhop0);
     n.append_child("rhopgradient").append_attribute("value") = c.rhopgradient;
     value("hswl", c.hswl);

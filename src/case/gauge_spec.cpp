@@ -1,6 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file gauge_spec.cpp
 #include "case/gauge_spec.h"
+#include "core/format.h"
 
 #include <cctype>
 #include <cstdio>
@@ -20,12 +21,6 @@ constexpr KindName kKinds[] = {{"velocity", GaugeKind::Velocity}, {"pressure", G
 constexpr const char* kSupported = "velocity, pressure, swl, maxz, force, solidmarker";
 constexpr const char* kTimingChildren[] = {"savevtkpart", "computedt", "computetime",
                                            "output",      "outputdt",  "outputtime"};
-
-std::string num(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
 
 bool isTimingChild(const std::string& n) {
     for (const char* t : kTimingChildren)
@@ -194,22 +189,22 @@ void writeTiming(const GaugeTiming& t, pugi::xml_node n) {
     auto window = [&](const char* name, const auto& start, const auto& end) {  // optional start/end
         if (!start && !end) return;
         pugi::xml_node w = n.append_child(name);
-        if (start) w.append_attribute("start") = num(*start).c_str();
-        if (end) w.append_attribute("end") = num(*end).c_str();
+        if (start) w.append_attribute("start") = exactText(*start).c_str();
+        if (end) w.append_attribute("end") = exactText(*end).c_str();
     };
     if (t.savevtkpart) value("savevtkpart", *t.savevtkpart ? "true" : "false");
-    if (t.computedt) value("computedt", num(*t.computedt));
+    if (t.computedt) value("computedt", exactText(*t.computedt));
     window("computetime", t.compute_start, t.compute_end);
     if (t.output) value("output", *t.output ? "true" : "false");
-    if (t.outputdt) value("outputdt", num(*t.outputdt));
+    if (t.outputdt) value("outputdt", exactText(*t.outputdt));
     window("outputtime", t.output_start, t.output_end);
 }
 
 void writePoint(pugi::xml_node n, const char* name, const Vec3d& p) {
     pugi::xml_node c = n.append_child(name);
-    c.append_attribute("x") = num(p.x).c_str();
-    c.append_attribute("y") = num(p.y).c_str();
-    c.append_attribute("z") = num(p.z).c_str();
+    c.append_attribute("x") = exactText(p.x).c_str();
+    c.append_attribute("y") = exactText(p.y).c_str();
+    c.append_attribute("z") = exactText(p.z).c_str();
 }
 
 }  // namespace
@@ -268,20 +263,20 @@ void writeGauges(const GaugeSet& set, pugi::xml_node parent) {
             case GaugeKind::Velocity:
             case GaugeKind::Pressure:
                 writePoint(n, "point", g.point);
-                n.append_child("kclimit").append_attribute("value") = num(g.kclimit).c_str();
+                n.append_child("kclimit").append_attribute("value") = exactText(g.kclimit).c_str();
                 break;
             case GaugeKind::Swl: {
                 writePoint(n, "point0", g.point0);
                 writePoint(n, "point2", g.point2);
-                n.append_child("pointdp").append_attribute("value") = num(g.pointdp).c_str();
-                if (g.masslimit) n.append_child("masslimit").append_attribute("value") = num(*g.masslimit).c_str();
-                if (g.masslimit_coef) n.append_child("masslimit").append_attribute("coef") = num(*g.masslimit_coef).c_str();
+                n.append_child("pointdp").append_attribute("value") = exactText(g.pointdp).c_str();
+                if (g.masslimit) n.append_child("masslimit").append_attribute("value") = exactText(*g.masslimit).c_str();
+                if (g.masslimit_coef) n.append_child("masslimit").append_attribute("coef") = exactText(*g.masslimit_coef).c_str();
                 break;
             }
             case GaugeKind::MaxZ:
                 writePoint(n, "point0", g.point0);
-                n.append_child("height").append_attribute("value") = num(g.height).c_str();
-                n.append_child("distlimit").append_attribute("value") = num(g.distlimit).c_str();
+                n.append_child("height").append_attribute("value") = exactText(g.height).c_str();
+                n.append_child("distlimit").append_attribute("value") = exactText(g.distlimit).c_str();
                 break;
             case GaugeKind::Force:
             case GaugeKind::SolidMarker:

@@ -8,31 +8,16 @@
 #include <map>
 
 #include "core/case_parameters.h"
+#include "core/format.h"
 
 namespace seaspring::model {
 
 namespace {
 
-/// Short text of a double for messages.
-std::string num(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
-
-std::string vec(Vec3d v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
-
-/// Exact text of a double (%.17g), as written into the resolved case.
-std::string fmt(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
 void setXyz(pugi::xml_node n, Vec3d v) {
-    n.append_attribute("x") = fmt(v.x).c_str();
-    n.append_attribute("y") = fmt(v.y).c_str();
-    n.append_attribute("z") = fmt(v.z).c_str();
+    n.append_attribute("x") = exactText(v.x).c_str();
+    n.append_attribute("y") = exactText(v.y).c_str();
+    n.append_attribute("z") = exactText(v.z).c_str();
 }
 
 /// The `<parameter key value>` entries of `<parameters>`, checked against the key table.
@@ -100,7 +85,7 @@ public:
     void requireOff(const std::string& key, double off, const std::string& feature) const {
         if (number(key) != off)
             fail(key,
-                 feature + " is not supported by seaspring (supported: " + num(off) + ", off)");
+                 feature + " is not supported by seaspring (supported: " + shortText(off) + ", off)");
     }
     void requireNone(const std::string& key, const std::string& feature) const {
         const std::string t = text(key);
@@ -110,7 +95,7 @@ public:
     double atLeast(const std::string& key, double lo, bool inclusive) const {
         const double v = number(key);
         if (inclusive ? !(v >= lo) : !(v > lo))
-            fail(key, std::string("must be ") + (inclusive ? ">= " : "> ") + num(lo));
+            fail(key, std::string("must be ") + (inclusive ? ">= " : "> ") + shortText(lo));
         return v;
     }
     /// "FILE:LINE: <parameter> key="K" value="V": message" (the line of <parameters> when absent).
@@ -213,7 +198,7 @@ DomainBox readSimulationDomain(const XmlSource& src, pugi::xml_node params, int 
     for (int k = 0; k < 3; ++k) {
         const bool flat_ok = k == 1 && dimensions == 2;
         if (flat_ok ? !(lo[k] <= hi[k]) : !(lo[k] < hi[k]))
-            src.fail(dom, "posmin " + vec(box.min) + " must lie below posmax " + vec(box.max) + " in " +
+            src.fail(dom, "posmin " + shortVec(box.min) + " must lie below posmax " + shortVec(box.max) + " in " +
                               "xyz"[k]);
     }
     return box;

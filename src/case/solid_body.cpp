@@ -5,24 +5,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include "core/format.h"
 
 namespace seaspring::model {
 
 namespace {
-
-/// Exact text of a double (%.17g), as written into the resolved case.
-std::string fmt(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-/// Short text of a double for messages.
-std::string num(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
 
 /// A plain-number attribute of a resolved element.
 double plainNumber(const XmlSource& src, pugi::xml_node n, const char* attr) {
@@ -82,12 +69,12 @@ SolidBody readSolid(const XmlSource& src, pugi::xml_node s, const std::vector<Mk
     b.poissratio = number("poissratio");
     b.critstretch = number("critstretch");
     b.damping = number("damping");
-    if (!(b.density > 0)) src.fail(s, "density=\"" + num(b.density) + "\": must be > 0 [kg/m^3]");
-    if (!(b.youngmod > 0)) src.fail(s, "youngmod=\"" + num(b.youngmod) + "\": must be > 0 [Pa]");
+    if (!(b.density > 0)) src.fail(s, "density=\"" + shortText(b.density) + "\": must be > 0 [kg/m^3]");
+    if (!(b.youngmod > 0)) src.fail(s, "youngmod=\"" + shortText(b.youngmod) + "\": must be > 0 [Pa]");
     if (!(b.poissratio > -1 && b.poissratio < 0.5))
-        src.fail(s, "poissratio=\"" + num(b.poissratio) + "\": must lie in (-1, 0.5)");
-    if (!(b.critstretch >= 0)) src.fail(s, "critstretch=\"" + num(b.critstretch) + "\": must be >= 0");
-    if (!(b.damping >= 0)) src.fail(s, "damping=\"" + num(b.damping) + "\": must be >= 0");
+        src.fail(s, "poissratio=\"" + shortText(b.poissratio) + "\": must lie in (-1, 0.5)");
+    if (!(b.critstretch >= 0)) src.fail(s, "critstretch=\"" + shortText(b.critstretch) + "\": must be >= 0");
+    if (!(b.damping >= 0)) src.fail(s, "damping=\"" + shortText(b.damping) + "\": must be >= 0");
     src.checkChildren(s, {"pointload"});
     for (pugi::xml_node l : s.children("pointload")) b.loads.push_back(readLoad(src, l));
     readClamps(src, s, blocks, b);
@@ -112,23 +99,23 @@ void writeSolids(pugi::xml_node parent, const std::vector<SolidBody>& solids, co
         std::string clamps;
         for (int c : s.clamp_mkbound) clamps += (clamps.empty() ? "" : ",") + std::to_string(c);
         n.append_attribute("mkclamp") = clamps.c_str();
-        n.append_attribute("density") = fmt(s.density).c_str();
-        n.append_attribute("youngmod") = fmt(s.youngmod).c_str();
-        n.append_attribute("poissratio") = fmt(s.poissratio).c_str();
-        n.append_attribute("critstretch") = fmt(s.critstretch).c_str();
-        n.append_attribute("damping") = fmt(s.damping).c_str();
+        n.append_attribute("density") = exactText(s.density).c_str();
+        n.append_attribute("youngmod") = exactText(s.youngmod).c_str();
+        n.append_attribute("poissratio") = exactText(s.poissratio).c_str();
+        n.append_attribute("critstretch") = exactText(s.critstretch).c_str();
+        n.append_attribute("damping") = exactText(s.damping).c_str();
         n.append_attribute("declaredin") = s.declared_in.c_str();
         for (const PointLoad& l : s.loads) {
             pugi::xml_node p = n.append_child("pointload");
-            p.append_attribute("x") = fmt(l.point.x).c_str();
-            p.append_attribute("y") = fmt(l.point.y).c_str();
-            p.append_attribute("z") = fmt(l.point.z).c_str();
-            p.append_attribute("fx") = fmt(l.force.x).c_str();
-            p.append_attribute("fy") = fmt(l.force.y).c_str();
-            p.append_attribute("fz") = fmt(l.force.z).c_str();
-            p.append_attribute("ratex") = fmt(l.rate.x).c_str();
-            p.append_attribute("ratey") = fmt(l.rate.y).c_str();
-            p.append_attribute("ratez") = fmt(l.rate.z).c_str();
+            p.append_attribute("x") = exactText(l.point.x).c_str();
+            p.append_attribute("y") = exactText(l.point.y).c_str();
+            p.append_attribute("z") = exactText(l.point.z).c_str();
+            p.append_attribute("fx") = exactText(l.force.x).c_str();
+            p.append_attribute("fy") = exactText(l.force.y).c_str();
+            p.append_attribute("fz") = exactText(l.force.z).c_str();
+            p.append_attribute("ratex") = exactText(l.rate.x).c_str();
+            p.append_attribute("ratey") = exactText(l.rate.y).c_str();
+            p.append_attribute("ratez") = exactText(l.rate.z).c_str();
         }
         n.append_attribute("particles") = std::to_string(s.particles).c_str();
     }

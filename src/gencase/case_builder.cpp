@@ -1,6 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file case_builder.cpp
 #include "gencase/case_builder.h"
+#include "core/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -186,11 +187,7 @@ void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
             std::string value = src_->text(p, "value");
             if (info->kind == ParameterKind::Number) {
                 const double v = src_->number(p, "value", ev_);  // validates; '#' expressions
-                if (!value.empty() && value[0] == '#') {       // are written evaluated
-                    char buf[40];
-                    std::snprintf(buf, sizeof buf, "%.17g", v);
-                    value = buf;
-                }
+                if (!value.empty() && value[0] == '#') value = exactText(v);  // written evaluated
             }
             if (info->kind == ParameterKind::Deprecated)
                 log_ << "Note: " << src_->where(p) << ": parameter " << key << " is deprecated and ignored\n";

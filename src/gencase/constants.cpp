@@ -1,6 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file constants.cpp
 #include "gencase/constants.h"
+#include "core/format.h"
 
 #include <cmath>
 #include <cstdio>
@@ -27,12 +28,6 @@ double readValue(const XmlSource& src, pugi::xml_node n, const ExpressionEvaluat
     return src.number(n, "value", ev);
 }
 
-std::string fmt(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
 }  // namespace
 
 ConstantsInput parseConstantsDef(const XmlSource& src, pugi::xml_node node,
@@ -57,7 +52,7 @@ ConstantsInput parseConstantsDef(const XmlSource& src, pugi::xml_node node,
             in.gravity = src.vec3(n, ev);
         } else if (name == "rhop0") {
             in.rhop0 = readValue(src, n, ev);
-            if (!(in.rhop0 > 0)) src.fail(n, "value=" + fmt(in.rhop0) + ": must be > 0");
+            if (!(in.rhop0 > 0)) src.fail(n, "value=" + exactText(in.rhop0) + ": must be > 0");
         } else if (name == "rhopgradient") {
             src.checkAttributes(n, {"value"});
             in.rhopgradient = src.integer(n, "value", ev);
@@ -65,19 +60,19 @@ ConstantsInput parseConstantsDef(const XmlSource& src, pugi::xml_node node,
                 src.fail(n, "value=" + std::to_string(in.rhopgradient) + ": expected 1, 2 or 3");
         } else if (name == "gamma") {
             in.gamma = readValue(src, n, ev);
-            if (!(in.gamma > 0)) src.fail(n, "value=" + fmt(in.gamma) + ": must be > 0");
+            if (!(in.gamma > 0)) src.fail(n, "value=" + exactText(in.gamma) + ": must be > 0");
         } else if (name == "coefsound") {
             in.coefsound = readValue(src, n, ev);
         } else if (name == "coefh") {
             in.coefh = readValue(src, n, ev);
             has_coefh = true;
-            if (!(in.coefh > 0)) src.fail(n, "value=" + fmt(in.coefh) + ": must be > 0");
+            if (!(in.coefh > 0)) src.fail(n, "value=" + exactText(in.coefh) + ": must be > 0");
         } else if (name == "hdp") {
             in.hdp = readValue(src, n, ev);
-            if (!(in.hdp > 0)) src.fail(n, "value=" + fmt(in.hdp) + ": must be > 0");
+            if (!(in.hdp > 0)) src.fail(n, "value=" + exactText(in.hdp) + ": must be > 0");
         } else if (name == "cflnumber") {
             in.cflnumber = readValue(src, n, ev);
-            if (!(in.cflnumber > 0)) src.fail(n, "value=" + fmt(in.cflnumber) + ": must be > 0");
+            if (!(in.cflnumber > 0)) src.fail(n, "value=" + exactText(in.cflnumber) + ": must be > 0");
         } else {
             AutoValue v = readAuto(src, n, ev);
             if (name == "hswl") in.hswl = v;
@@ -143,7 +138,7 @@ void printConstants(std::ostream& os, const CaseConstants& c) {
                   "  CFLnumber:    %g\n",
                   c.dimensions, c.dp, c.gravity.x, c.gravity.y, c.gravity.z, c.rhop0, c.hswl,
                   c.speedsystem, c.coefsound, c.speedsound, c.gamma, c.h,
-                  c.hdp > 0 ? ("hdp=" + fmt(c.hdp)).c_str() : ("coefh=" + fmt(c.coefh)).c_str(),
+                  c.hdp > 0 ? ("hdp=" + exactText(c.hdp)).c_str() : ("coefh=" + exactText(c.coefh)).c_str(),
                   c.b, c.massfluid, c.massbound, c.cflnumber);
     os << buf;
 }

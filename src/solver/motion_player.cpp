@@ -222,4 +222,22 @@ RigidTransform motionTransformAt(const MotionObject& obj, double time) {
     return pose;
 }
 
+std::vector<physics::RigidMotionGpu> motionPosesOver(const model::MotionSet& set, double time, double interval) {
+    std::vector<physics::RigidMotionGpu> m(set.objects.size());
+    for (std::size_t o = 0; o < m.size(); ++o) {
+        const RigidTransform a = motionTransformAt(set.objects[o], time);
+        const RigidTransform b = motionTransformAt(set.objects[o], time + interval);
+        for (int r = 0; r < 3; ++r) {
+            for (int col = 0; col < 3; ++col) {
+                m[o].r[3 * r + col] = a.r[r][col];
+                m[o].r_next[3 * r + col] = b.r[r][col];
+            }
+            m[o].t[r] = a.t[r];
+            m[o].t_next[r] = b.t[r];
+        }
+        m[o].inv_dt = 1.0 / interval;
+    }
+    return m;
+}
+
 }  // namespace seaspring::solver

@@ -54,8 +54,11 @@
 /// - wait, mvnull: no motion (mvnull lasts forever).
 #pragma once
 
+#include <vector>
+
 #include "core/vec3.h"
 #include "case/motion.h"
+#include "physics/particle_updates.h"
 
 namespace seaspring::solver {
 
@@ -81,5 +84,9 @@ RigidTransform axisRotation(const Vec3d& p1, const Vec3d& p2, double angle);
 /// Throws seaspring::Error (naming the object's line) for a chain that loops through
 /// movements of zero total duration, which never advances in time.
 RigidTransform motionTransformAt(const model::MotionObject& obj, double time);
+
+/// Every motion object's pose at `time` and at `time + interval`, as the backends take them
+/// (physics::RigidMotionGpu: velocity over the interval from the two poses).
+std::vector<physics::RigidMotionGpu> motionPosesOver(const model::MotionSet& set, double time, double interval);
 
 }  // namespace seaspring::solver

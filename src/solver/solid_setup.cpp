@@ -7,17 +7,10 @@
 #include <map>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "solver/solver_case.h"
 
 namespace seaspring::solver {
-
-namespace {
-std::string fmtg(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
-}  // namespace
 
 SolidSetup makeSolidSetup(const SolverCase& c) {
     SolidSetup s;
@@ -43,12 +36,12 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         const physics::VcpmElastic el = physics::vcpmElastic(sb.youngmod, sb.poissratio, sb.density);
         dt = std::min(dt, physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
         const physics::VcpmMaterial& m = s.materials.back();
-        s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + fmtg(sb.density) +
-                               ", E " + fmtg(sb.youngmod) + ", nu " + fmtg(sb.poissratio) + ", c_S " +
-                               fmtg(el.wave_speed) + " m/s, k " + fmtg(m.k_first) +
-                               (dim == 2 ? "/" + fmtg(m.k_second) : std::string()) + ", T " +
-                               fmtg(2 * m.t_half) + ", damping rate " + fmtg(m.damp_rate) + " 1/s" +
-                               (sb.critstretch > 0 ? ", breaks at stretch " + fmtg(sb.critstretch) : ""));
+        s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + shortText(sb.density, 6) +
+                               ", E " + shortText(sb.youngmod, 6) + ", nu " + shortText(sb.poissratio, 6) + ", c_S " +
+                               shortText(el.wave_speed, 6) + " m/s, k " + shortText(m.k_first, 6) +
+                               (dim == 2 ? "/" + shortText(m.k_second, 6) : std::string()) + ", T " +
+                               shortText(2 * m.t_half, 6) + ", damping rate " + shortText(m.damp_rate, 6) + " 1/s" +
+                               (sb.critstretch > 0 ? ", breaks at stretch " + shortText(sb.critstretch, 6) : ""));
     }
     s.dt = dt;
     s.body.resize(n);
@@ -94,9 +87,9 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
             f = physics::Double3{f.x + l.force.x, f.y + l.force.y, f.z + l.force.z};
             r = physics::Double3{r.x + l.rate.x, r.y + l.rate.y, r.z + l.rate.z};
             s.body_lines.push_back("point load on solid particle " + std::to_string(first + best) + " at (" +
-                                   fmtg(s.pos[best].x) + ", " + fmtg(s.pos[best].y) + ", " + fmtg(s.pos[best].z) +
-                                   "): F = (" + fmtg(l.force.x) + ", " + fmtg(l.force.y) + ", " + fmtg(l.force.z) +
-                                   ") + (" + fmtg(l.rate.x) + ", " + fmtg(l.rate.y) + ", " + fmtg(l.rate.z) + ") t N");
+                                   shortText(s.pos[best].x, 6) + ", " + shortText(s.pos[best].y, 6) + ", " + shortText(s.pos[best].z, 6) +
+                                   "): F = (" + shortText(l.force.x, 6) + ", " + shortText(l.force.y, 6) + ", " + shortText(l.force.z, 6) +
+                                   ") + (" + shortText(l.rate.x, 6) + ", " + shortText(l.rate.y, 6) + ", " + shortText(l.rate.z, 6) + ") t N");
         }
 
     // Moving boundary ids -> motion object (for clamp nodes on a moving boundary).

@@ -11,6 +11,7 @@
 #include "case/motion_xml.h"
 #include "case/xml_source.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "io/case_h5.h"
 
 namespace seaspring::solver {
@@ -20,18 +21,10 @@ using model::XmlSource;
 
 namespace {
 
-std::string num(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
-
-std::string vec(Vec3d v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
-
 void checkConstants(const XmlSource& src, pugi::xml_node node, const model::CaseConstants& c,
                     bool has_fluid, bool has_boundary) {
     auto bad = [&](const char* name, double v, const std::string& why) {
-        src.fail(node.child(name), "value=" + num(v) + ": " + why);
+        src.fail(node.child(name), "value=" + shortText(v) + ": " + why);
     };
     if (c.dimensions != 2 && c.dimensions != 3) bad("dimensions", c.dimensions, "must be 2 or 3");
     if (!(c.dp > 0)) bad("dp", c.dp, "must be > 0");
@@ -60,8 +53,8 @@ void checkParticles(const XmlSource& src, pugi::xml_node parts,
                     src.where(constants.child("dimensions")) + " <dimensions> says " +
                     std::to_string(c.constants.dimensions));
     if (std::fabs(h5.header.dp - c.constants.dp) > 1e-12 * c.constants.dp)
-        throw Error(f + ": dp=" + num(h5.header.dp) + " but " + src.where(constants.child("dp")) +
-                    " <dp> says " + num(c.constants.dp));
+        throw Error(f + ": dp=" + shortText(h5.header.dp) + " but " + src.where(constants.child("dp")) +
+                    " <dp> says " + shortText(c.constants.dp));
     std::size_t b = 0;
     for (std::uint32_t i = 0; i < np; ++i) {
         while (i >= c.blocks[b].begin + c.blocks[b].count) ++b;  // the blocks cover 0..np-1
@@ -76,9 +69,9 @@ void checkParticles(const XmlSource& src, pugi::xml_node parts,
         const Vec3d p = h5.particles.pos[i];
         if (!(p.x >= c.domain_min.x && p.x <= c.domain_max.x && p.y >= c.domain_min.y &&
               p.y <= c.domain_max.y && p.z >= c.domain_min.z && p.z <= c.domain_max.z))
-            throw Error(f + ": particle " + std::to_string(i) + " at " + vec(p) + " lies outside " +
-                        src.where(dom) + " <simulationdomain> " + vec(c.domain_min) + " - " +
-                        vec(c.domain_max));
+            throw Error(f + ": particle " + std::to_string(i) + " at " + shortVec(p) + " lies outside " +
+                        src.where(dom) + " <simulationdomain> " + shortVec(c.domain_min) + " - " +
+                        shortVec(c.domain_max));
     }
 }
 
@@ -210,11 +203,11 @@ std::vector<std::string> describeCase(const SolverCase& c) {
                   std::to_string(c.nfixed) + ", moving " + std::to_string(c.nmoving) + ", solid " +
                   std::to_string(c.nsolid) + ", fluid " + std::to_string(c.nfluid) + "), " +
                   std::to_string(k.dimensions) + "D");
-    out.push_back("dp=" + num(k.dp) + " m, h=" + num(k.h) + " m, c0=" + num(k.speedsound) +
-                  " m/s, B=" + num(k.b) + " Pa, rho0=" + num(k.rhop0) +
-                  " kg/m^3, gamma=" + num(k.gamma));
-    out.push_back("mass: fluid " + num(k.massfluid) + " kg, boundary " + num(k.massbound) + " kg");
-    out.push_back("domain: " + vec(c.domain_min) + " - " + vec(c.domain_max) + " m");
+    out.push_back("dp=" + shortText(k.dp) + " m, h=" + shortText(k.h) + " m, c0=" + shortText(k.speedsound) +
+                  " m/s, B=" + shortText(k.b) + " Pa, rho0=" + shortText(k.rhop0) +
+                  " kg/m^3, gamma=" + shortText(k.gamma));
+    out.push_back("mass: fluid " + shortText(k.massfluid) + " kg, boundary " + shortText(k.massbound) + " kg");
+    out.push_back("domain: " + shortVec(c.domain_min) + " - " + shortVec(c.domain_max) + " m");
     if (!c.motion.empty())
         out.push_back("motion: " + std::to_string(c.motion.objects.size()) + " object(s)");
     if (c.bonds)

@@ -23,21 +23,7 @@ StepContext::StepContext(Backend& backend, const SolverCase& c, const BackendSet
     : backend_(backend), case_(c), setup_(setup), solid_substeps_(solid_substeps), timers_(timers) {}
 
 std::vector<physics::RigidMotionGpu> StepContext::motionsOver(double time, double interval) const {
-    std::vector<physics::RigidMotionGpu> m(case_.motion.objects.size());
-    for (std::size_t o = 0; o < m.size(); ++o) {
-        const RigidTransform a = motionTransformAt(case_.motion.objects[o], time);
-        const RigidTransform b = motionTransformAt(case_.motion.objects[o], time + interval);
-        for (int r = 0; r < 3; ++r) {
-            for (int col = 0; col < 3; ++col) {
-                m[o].r[3 * r + col] = a.r[r][col];
-                m[o].r_next[3 * r + col] = b.r[r][col];
-            }
-            m[o].t[r] = a.t[r];
-            m[o].t_next[r] = b.t[r];
-        }
-        m[o].inv_dt = 1.0 / interval;
-    }
-    return m;
+    return motionPosesOver(case_.motion, time, interval);
 }
 
 void StepContext::placeMoving(double time, double interval) {

@@ -105,21 +105,7 @@ struct Pair {
     std::string skip_reason;
 
     std::vector<physics::RigidMotionGpu> motions(double t, double dt) const {
-        std::vector<physics::RigidMotionGpu> m(kase.motion.objects.size());
-        for (std::size_t o = 0; o < m.size(); ++o) {
-            const solver::RigidTransform a = solver::motionTransformAt(kase.motion.objects[o], t);
-            const solver::RigidTransform c = solver::motionTransformAt(kase.motion.objects[o], t + dt);
-            for (int r = 0; r < 3; ++r) {
-                for (int k = 0; k < 3; ++k) {
-                    m[o].r[3 * r + k] = a.r[r][k];
-                    m[o].r_next[3 * r + k] = c.r[r][k];
-                }
-                m[o].t[r] = a.t[r];
-                m[o].t_next[r] = c.t[r];
-            }
-            m[o].inv_dt = 1.0 / dt;
-        }
-        return m;
+        return solver::motionPosesOver(kase.motion, t, dt);
     }
     /// Calls f on both backends.
     template <class F>
