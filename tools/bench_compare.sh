@@ -47,7 +47,7 @@ for ((r = 1; r <= rounds; ++r)); do
   fi
 done
 echo "== runs (ns per particle per step) =="
-column -s, -t "$results"
+if command -v column >/dev/null; then column -s, -t "$results"; else tr , '\t' <"$results"; fi
 echo "== median new / median base =="
 python3 - "$results" <<'PY'
 import csv, statistics, sys

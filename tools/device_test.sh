@@ -20,6 +20,17 @@ tar -xJf "$root/build-dev/tests.tar.xz" -C "$build"
 shared="$(dirname "$src_root")/shared"
 [[ -e "$shared" ]] || ln -s "$build/shared" "$shared"
 export LD_LIBRARY_PATH="$build/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+# The Python tests were configured with Debian's /usr/bin/python3; where that one lacks numpy,
+# h5py or matplotlib (the GPU machines keep them in another Python), point them at one that has them.
+if ! /usr/bin/python3 -c "import numpy, h5py, matplotlib" 2>/dev/null; then
+  for py in "$(command -v python3)" /opt/torch/.venv/bin/python3; do
+    if [[ -x "$py" ]] && "$py" -c "import numpy, h5py, matplotlib" 2>/dev/null; then
+      find "$build" -name CTestTestfile.cmake -exec sed -i "s#/usr/bin/python3#$py#g" {} +
+      echo "Python tests run with $py"
+      break
+    fi
+  done
+fi
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader | tee "$out/gpu.txt"
 ctest_bin="$(command -v ctest || true)"
 [[ -z "$ctest_bin" && -x /opt/torch/.venv/bin/ctest ]] && ctest_bin=/opt/torch/.venv/bin/ctest

@@ -80,7 +80,7 @@ SEASPRING_HD inline std::uint32_t linearCellOf(const CellGrid& g, float w) {
 
 /// Distance along one axis from a point at offset `o` in its cell ([0, cellsize]) to the
 /// nearest face of the cell `k` cells away (0 for k = 0), less `margin`, floored at 0.
-SEASPRING_HD inline float cellGap(int k, float o, float cs, float margin) {
+SEASPRING_HD_INLINE float cellGap(int k, float o, float cs, float margin) {
     const float d = k > 0 ? float(k) * cs - o : (k < 0 ? o - float(k + 1) * cs : 0.f);
     const float dm = d - margin;
     return dm > 0.f ? dm : 0.f;
@@ -92,7 +92,7 @@ SEASPRING_HD inline float cellGap(int k, float o, float cs, float margin) {
 /// conservative: every pair that passes the exact pair test (float r^2 <= r2) lies inside it,
 /// so skipping the rest changes no result; it only spares the candidates out of reach
 /// (rows at the corners of the search box and cells beyond the sphere along x).
-SEASPRING_HD inline bool rowSpan(const CellGrid& g, int cax, float ox, float gyz2, float r2, float margin,
+SEASPRING_HD_INLINE bool rowSpan(const CellGrid& g, int cax, float ox, float gyz2, float r2, float margin,
                                  int& x0, int& x1) {
     const float rem = r2 - gyz2;
     if (rem < 0.f) return false;

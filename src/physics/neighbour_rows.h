@@ -23,14 +23,14 @@ constexpr float kRowSpanMargin = 1e-3f;
 
 /// Particle a's cell offsets moved into the frame of one row of cells: y + rowdy, z + rowdz,
 /// rowdy/rowdz = cellsize * (a's cell - the row's cell) in y/z. Computed once per row.
-SEASPRING_HD inline Float4 rowFrame(const Float4& psa, float rowdy, float rowdz) {
+SEASPRING_HD_INLINE Float4 rowFrame(const Float4& psa, float rowdy, float rowdz) {
     return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
 }
 
 /// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
 /// rowFrame for that row.
 template <int kDim>
-SEASPRING_HD inline float pairOffset(const Float4& par, const Float4& psb, int cax, const CellGrid& g,
+SEASPRING_HD_INLINE float pairOffset(const Float4& par, const Float4& psb, int cax, const CellGrid& g,
                                      float& drx, float& dry, float& drz) {
     drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), par.x - psb.x);
     dry = kDim == 3 ? par.y - psb.y : 0.f;
@@ -39,7 +39,7 @@ SEASPRING_HD inline float pairOffset(const Float4& par, const Float4& psb, int c
 }
 
 /// The exact neighbour test of a pair (inside the kernel support, not the particle itself).
-SEASPRING_HD inline bool isNeighbour(float rr2, const FluidConstants& c) {
+SEASPRING_HD_INLINE bool isNeighbour(float rr2, const FluidConstants& c) {
     return rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero;
 }
 
@@ -51,7 +51,7 @@ struct SearchBox {
 };
 
 template <int kDim>
-SEASPRING_HD inline SearchBox searchBox(const Float4& psa, const CellGrid& g) {
+SEASPRING_HD_INLINE SearchBox searchBox(const Float4& psa, const CellGrid& g) {
     SearchBox b;
     b.cax = packedCellX(g, psa.w);
     b.cay = kDim == 3 ? packedCellY(g, psa.w) : 0;
@@ -68,7 +68,7 @@ SEASPRING_HD inline SearchBox searchBox(const Float4& psa, const CellGrid& g) {
 /// `cell_start`: the cells of the row in reach of `psa` (rowSpan). `gz` = the row's gap in z
 /// (cellGap, once per z). False when the row is out of reach.
 template <int kDim>
-SEASPRING_HD inline bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
+SEASPRING_HD_INLINE bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
                                        const std::uint32_t* cell_start, const FluidConstants& c,
                                        const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
     const float gy = kDim == 3 ? cellGap(y - b.cay, psa.y, g.cellsizef, b.margin) : 0.f;
@@ -87,7 +87,7 @@ SEASPRING_HD inline bool rowCandidates(const SearchBox& b, const Float4& psa, in
 /// that row and `cax` = psa's cell in x (the arguments of pairOffset). The one row walk of every
 /// pair loop; `fn` is a lambda or functor passed by value (inlined on both backends).
 template <int kDim, class RowFn>
-SEASPRING_HD inline void forEachCandidateRow(const Float4& psa, const std::uint32_t* cell_start,
+SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint32_t* cell_start,
                                              const FluidConstants& c, const CellGrid& g, RowFn fn) {
     const SearchBox box = searchBox<kDim>(psa, g);
     for (int z = box.z0; z <= box.z1; ++z) {
