@@ -41,6 +41,22 @@ public:
         }
     }
 
+    /// Two independent passes (neither reads what the other writes): fa over [ba, ea), then fb
+    /// over [bb, eb), in one parallel region whose threads move on to the second pass as they
+    /// finish their share of the first (no barrier between them).
+    template <class LaunchA, class LaunchB, class FA, class FB>
+    void forEachIndependent(std::uint32_t ba, std::uint32_t ea, const FA& fa, std::uint32_t bb, std::uint32_t eb,
+                            const FB& fb) const {
+        static_assert(LaunchA::kCpuChunk > 0 && LaunchB::kCpuChunk > 0, "dynamic schedules only");
+#pragma omp parallel num_threads(threads_)
+        {
+#pragma omp for schedule(dynamic, LaunchA::kCpuChunk) nowait
+            for (std::int64_t i = ba; i < std::int64_t(ea); ++i) fa(std::uint32_t(i));
+#pragma omp for schedule(dynamic, LaunchB::kCpuChunk)
+            for (std::int64_t i = bb; i < std::int64_t(eb); ++i) fb(std::uint32_t(i));
+        }
+    }
+
     /// combine(..., f(i)) over [b, e) from `init`. `combine` must be exact, commutative and
     /// associative (max, min, integer sums), so the grouping of the partial results, which
     /// depends on the thread count, cannot change the result.

@@ -114,6 +114,14 @@ public:
         SEASPRING_CUDA_LAUNCH_CHECK();
     }
 
+    /// Two independent passes: two launches, in this order.
+    template <class LaunchA, class LaunchB, class FA, class FB>
+    void forEachIndependent(std::uint32_t ba, std::uint32_t ea, const FA& fa, std::uint32_t bb, std::uint32_t eb,
+                            const FB& fb) const {
+        forEach<LaunchA>(ba, ea, fa);
+        forEach<LaunchB>(bb, eb, fb);
+    }
+
     /// combine(..., f(i)) over [b, e) from `init` in two fixed-shape stages (4 blocks per SM,
     /// then one); `combine` must be exact, commutative and associative. Synchronises.
     template <class T, class F, class C>

@@ -147,4 +147,13 @@ inline double variableDt(const DtMaxima& m, double h, double cs0, double cfl) {
     return cfl * (dt1 < dt2 ? dt1 : dt2);
 }
 
+/// Host only. The smallest dt a step may take (DualSPHysics' DtMin): `dt_min` when set (> 0),
+/// else CoefDtMin h / c0. A variable dt below it is raised to it (and counted).
+inline double minimumDt(double dt_min, double coef_dt_min, double h, double cs0) {
+    return dt_min > 0 ? dt_min : coef_dt_min * h / cs0;
+}
+
+/// Host only. The first step's dt (DualSPHysics' DtIni): `dt_ini` when set (> 0), else h / c0.
+inline double initialDt(double dt_ini, double h, double cs0) { return dt_ini > 0 ? dt_ini : h / cs0; }
+
 }  // namespace seaspring::physics

@@ -16,7 +16,7 @@ namespace seaspring::solver {
 template <class Opt, bool kCompact>
 struct FluidForcesPass {
     ForceArgs a;
-    SEASPRING_HD void operator()(std::uint32_t i) const {
+    SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
         const physics::FluidAccum acc = physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g);
         a.v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
         a.v.visc[i] = acc.visc;
@@ -28,7 +28,7 @@ struct FluidForcesPass {
 template <class Opt, bool kCompact>
 struct BoundForcesPass {
     ForceArgs a;
-    SEASPRING_HD void operator()(std::uint32_t i) const {
+    SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
         float ar, visc;
         physics::boundParticleForces<Opt, kCompact>(i, a.in, a.c, a.g, ar, visc);
         a.v.acear[i] = physics::Float4{0.f, 0.f, 0.f, ar};
@@ -91,13 +91,15 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     using physics::FluidOptions;
     using physics::Viscosity;
     constexpr bool kCompact = Exec::kCompactPairs;
-    if (a.np > a.nbound)
-        dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
-            exec.template forEach<LaunchFluidPairs>(a.nbound, a.np, FluidForcesPass<decltype(opt), kCompact>{a});
-        });
-    // The boundary loop reads only the kernel and the dimension.
+    // The boundary loop reads only the kernel and the dimension. The two loops are independent
+    // (each writes its own particles' acear and visc; both read the pressure pass's results). On
+    // the CPU the threads that finish their share of the (uneven) boundary loop go on to the fluid.
     using BoundOpt = FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>;
-    if (a.nbound > 0) exec.template forEach<LaunchBoundPairs>(0u, a.nbound, BoundForcesPass<BoundOpt, kCompact>{a});
+    dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
+        exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(
+            0u, a.nbound, BoundForcesPass<BoundOpt, kCompact>{a}, a.nbound, a.np,
+            FluidForcesPass<decltype(opt), kCompact>{a});
+    });
 }
 
 template <class Exec, class Kernel, int kDim>

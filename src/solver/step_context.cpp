@@ -15,7 +15,7 @@
 namespace seaspring::solver {
 
 double initialDt(const SolverCase& c) {
-    return c.params.dt_ini > 0 ? c.params.dt_ini : c.constants.h / c.constants.speedsound;
+    return physics::initialDt(c.params.dt_ini, c.constants.h, c.constants.speedsound);
 }
 
 StepContext::StepContext(Backend& backend, const SolverCase& c, const BackendSetup& setup, int solid_substeps,
@@ -37,8 +37,8 @@ double StepContext::forcesDt() {
 }
 
 double StepContext::limitDt(double dt) {
-    const double h = case_.constants.h, cs0 = case_.constants.speedsound;
-    const double dtmin = case_.params.dt_min > 0 ? case_.params.dt_min : case_.params.coef_dt_min * h / cs0;
+    const double dtmin = physics::minimumDt(case_.params.dt_min, case_.params.coef_dt_min, case_.constants.h,
+                                            case_.constants.speedsound);
     if (!std::isfinite(dt)) {
         char v[64];
         std::snprintf(v, sizeof v, "%g", dt);
