@@ -5,7 +5,8 @@
 ///        passes (particle_passes.h, force_passes.h, solid_passes.h) over an execution policy
 ///        `Exec`: cpu::HostExec (OpenMP loops, host memory) or cuda::CudaExec (kernel launches,
 ///        device memory). An Exec provides Buffer<T>, forEach<Launch>(b, e, pass),
-///        reduce(b, e, init, value, combine), sequence(work, widest, body), sortPairs,
+///        forEachIndependent (two passes that may overlap), reduce(b, e, init, value, combine),
+///        sequence(work, widest, body), sortPairs,
 ///        lowerBound, copy and synchronize; everything else is here, so both backends run the
 ///        same passes in the same order and give the same bits.
 #pragma once
