@@ -3,7 +3,7 @@
 /// \brief The per-particle fields of the solver: ONE table. Everything that handles particles
 ///        field by field derives from it: the arrays of both backends (solver/particle_store.h),
 ///        the pointer view the physics functions read (ParticleView, physics/particle_updates.h),
-///        the gather after every sort (solver/divide_passes.h), the copy back to the host in id
+///        the gather after every sort (solver/engine.h, GatherPass), the copy back to the host in id
 ///        order and the state hash (solver/state_hash.cpp), and what a restart file holds.
 ///
 /// Adding a field is one row: X(name, type, when it exists, flags).

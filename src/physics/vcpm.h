@@ -3,7 +3,7 @@
 /// \brief The VCPM lattice solid (volume-compensated particle method, Chen & Liu 2016; seed
 ///        paper 000 §2): material constants, bond half-elongation, the per-particle volumetric
 ///        sum, the bond force, breakage, and the symplectic sub-step (Eqs. 20-23). One source for
-///        the OpenMP loops (src/cpu/cpu_solid.cpp) and the CUDA kernels (src/cuda/cuda_solid.cu).
+///        both backends, through the passes of src/solver/solid_passes.h.
 ///
 /// Energy of the lattice (each bond seen from both ends, delta_l = half the elongation):
 ///   U = sum_I [ 1/2 sum_J k_IJ dl_IJ^2 + 1/2 T (sum_J dl_IJ)^2 ]
