@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
             for (const std::string& l : solver::describeCase(c)) std::cout << "  " << l << "\n";
             std::cout << "  physics: "
                       << solver::describePhysics(c.params, c.constants.dimensions,
-                                                       solver::resolveCellDiv(c, opt.cell_div)) << "\n";
+                                                       solver::resolveCellDiv(c, opt.cell_div), solver::resolveSkin(opt))
+                      << "\n";
             std::cout << "  backend: " << backend->name() << " (" << backend->deviceName() << ")";
             if (backend->name() == "cpu") std::cout << ", " << backend->threads() << " threads";
             std::cout << "\n  TimeMax " << c.params.time_max << " s, TimeOut " << c.params.time_out

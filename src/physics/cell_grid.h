@@ -8,6 +8,13 @@
 /// origin: offsets stay small, so float pair distances keep double-like accuracy in long
 /// domains. Pair distance: (local_a - local_b) + cellsize * (cell_a - cell_b), exact in the
 /// cell difference whatever cell a particle was assigned to.
+///
+/// Skin (Verlet-style, without a neighbour list): between two sorts a particle keeps the cell
+/// it was sorted into while it stays within `skinf` of that cell along every axis (its PosCell
+/// is refreshed from its position in that cell). The neighbour search then treats every cell as
+/// grown by the skin (searchBox's margin) and searches one cell further (`range`), so every
+/// neighbour is still visited; a divide sorts again only when a particle has left its grown
+/// cell (refreshPosCellAt). Skin 0: a sort at every divide.
 #pragma once
 
 #include <cmath>
@@ -24,7 +31,9 @@ struct CellGrid {
     float cellsizef = 0;                   ///< float(cellsize)
     float ovcellsizef = 0;                 ///< 1 / cellsizef
     int ncx = 1, ncy = 1, ncz = 1;         ///< cells per axis
-    int range = 1;                         ///< cells searched on each side (= cell_div)
+    int range = 1;                         ///< cells searched on each side (cell_div, + 1 with a skin)
+    int cell_div = 1;                      ///< cells per 2h
+    float skinf = 0;                       ///< skin [m] (0: sorted at every divide)
     std::uint32_t bitsx = 1, bitsy = 1;    ///< packed cell: cx | cy << bitsx | cz << (bitsx+bitsy)
     std::uint32_t maskx = 1, masky = 1;
 
@@ -60,6 +69,25 @@ SEASPRING_HD inline Float4 makePosCell(const CellGrid& g, const Double3& p, std:
     const std::uint32_t packed = std::uint32_t(cx) | (std::uint32_t(cy) << g.bitsx) |
                                  (std::uint32_t(cz) << (g.bitsx + g.bitsy));
     r.w = uintBitsToFloat(packed);
+    return r;
+}
+
+SEASPRING_HD inline int packedCellX(const CellGrid& g, float w);
+SEASPRING_HD inline int packedCellY(const CellGrid& g, float w);
+SEASPRING_HD inline int packedCellZ(const CellGrid& g, float w);
+
+/// Between two sorts (skin > 0): the PosCell of a position in the cell `packed` it was sorted
+/// into (same arithmetic as makePosCell). `outside` = the position lies more than the skin
+/// outside that cell along some axis, or is not finite: the next divide must sort.
+SEASPRING_HD inline Float4 posCellInCell(const CellGrid& g, const Double3& p, float packed, bool& outside) {
+    const int cx = packedCellX(g, packed), cy = packedCellY(g, packed), cz = packedCellZ(g, packed);
+    Float4 r;
+    r.x = float(p.x - (g.minx + double(cx) * g.cellsize));
+    r.y = float(p.y - (g.miny + double(cy) * g.cellsize));
+    r.z = float(p.z - (g.minz + double(cz) * g.cellsize));
+    r.w = packed;
+    const float lo = -g.skinf, hi = g.cellsizef + g.skinf;
+    outside = !(r.x >= lo && r.x <= hi && r.y >= lo && r.y <= hi && r.z >= lo && r.z <= hi);
     return r;
 }
 
@@ -114,17 +142,26 @@ SEASPRING_HD inline std::uint64_t sortKey(std::uint32_t linear_cell, std::uint32
     return (cell << 32) | std::uint64_t(id);
 }
 
-/// Builds the grid over [min, max] with cells of size 2h/cell_div (host only).
+/// Largest skin, as a fraction of the cell size: one more cell on each side of the search box
+/// covers a particle and its neighbour both up to half a cell outside their cells.
+constexpr double kMaxSkinFraction = 0.5;
+/// The default skin (-skin): measured in docs/performance.md.
+constexpr double kDefaultSkinFraction = 0.05;
+
+/// Builds the grid over [min, max] with cells of size 2h/cell_div and a skin of
+/// `skin_fraction` cells (0 <= skin_fraction <= kMaxSkinFraction; host only).
 /// Returns false when the packed cell does not fit 32 bits or there are too many cells.
 inline bool makeCellGrid(double minx, double miny, double minz, double maxx, double maxy,
-                         double maxz, double h, int cell_div, CellGrid& g) {
+                         double maxz, double h, int cell_div, CellGrid& g, double skin_fraction = 0.0) {
     g.minx = minx;
     g.miny = miny;
     g.minz = minz;
     g.cellsize = 2.0 * h / double(cell_div);
     g.cellsizef = float(g.cellsize);
     g.ovcellsizef = 1.f / g.cellsizef;
-    g.range = cell_div;
+    g.cell_div = cell_div;
+    g.range = cell_div + (skin_fraction > 0.0 ? 1 : 0);
+    g.skinf = float(skin_fraction * g.cellsize);
     auto count = [&](double lo, double hi) { return int(std::floor((hi - lo) / g.cellsize)) + 1; };
     g.ncx = count(minx, maxx);
     g.ncy = count(miny, maxy);

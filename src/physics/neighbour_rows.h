@@ -18,7 +18,8 @@
 
 namespace seaspring::physics {
 
-/// Safety margin of the row spans, in cells: absorbs the rounding of the span arithmetic.
+/// Safety margin of the row spans, in cells: absorbs the rounding of the span arithmetic. The
+/// grid's skin is added to it: a candidate may lie up to the skin outside its cell (cell_grid.h).
 constexpr float kRowSpanMargin = 1e-3f;
 
 /// Particle a's cell offsets moved into the frame of one row of cells: y + rowdy, z + rowdz,
@@ -47,7 +48,7 @@ SEASPRING_HD_INLINE bool isNeighbour(float rr2, const FluidConstants& c) {
 /// (2D: y0 = y1 = 0) of at most 2 range + 1 cells each.
 struct SearchBox {
     int cax, cay, caz, y0, y1, z0, z1;
-    float margin;  ///< rowSpan's safety margin [m]
+    float margin;  ///< rowSpan's safety margin and the grid's skin [m]
 };
 
 template <int kDim>
@@ -60,7 +61,7 @@ SEASPRING_HD_INLINE SearchBox searchBox(const Float4& psa, const CellGrid& g) {
     b.y1 = kDim == 3 ? mini(b.cay + g.range, g.ncy - 1) : 0;
     b.z0 = maxi(b.caz - g.range, 0);
     b.z1 = mini(b.caz + g.range, g.ncz - 1);
-    b.margin = kRowSpanMargin * g.cellsizef;
+    b.margin = fma32(kRowSpanMargin, g.cellsizef, g.skinf);
     return b;
 }
 

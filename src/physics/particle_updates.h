@@ -82,6 +82,15 @@ SEASPRING_HD inline void posCellAt(std::uint32_t i, const ParticleView& v, const
     v.poscell[i] = makePosCell(g, v.pos[i], cell);
 }
 
+/// Between two sorts (skin > 0): particle i's PosCell refreshed in the cell it was sorted into
+/// (posCellInCell). Returns 1 when the next divide must sort: the particle left the skin of
+/// that cell, or was excluded (it must leave the active range).
+SEASPRING_HD inline std::uint32_t refreshPosCellAt(std::uint32_t i, const ParticleView& v, const CellGrid& g) {
+    bool outside;
+    v.poscell[i] = posCellInCell(g, v.pos[i], v.poscell[i].w, outside);
+    return (outside || v.excl[i] != kActive) ? 1u : 0u;
+}
+
 /// A rigid motion x = R x0 + t (double), and the velocity over the coming interval.
 struct RigidMotionGpu {
     double r[9];

@@ -82,6 +82,11 @@ inline std::vector<std::uint32_t> gaugeSlotsOfIds(const std::vector<std::uint32_
 
 /// The time loop's view of a backend. One implementation, solver::Engine<Exec> (engine.h), over
 /// an execution policy: cpu::HostExec (OpenMP) or cuda::CudaExec.
+/// Backend::divideCounts.
+struct DivideCounts {
+    std::uint64_t divides = 0, sorts = 0;
+};
+
 class Backend {
 public:
     virtual ~Backend() = default;
@@ -95,7 +100,11 @@ public:
     /// `keep_step_start`: the symplectic step-start state (pos_pre, velrho_pre) is still to be
     /// read (between predictor and corrector); otherwise it is not reordered, as the next
     /// predictor overwrites it. (Verlet's state at n-1 is always kept.)
+    /// With a skin (CellGrid::skinf > 0) it only refreshes PosCell while every particle stays
+    /// within the skin of the cell it was sorted into and none was excluded (cell_grid.h).
     virtual void divide(bool keep_step_start) = 0;
+    /// Divides so far and how many of them sorted.
+    virtual DivideCounts divideCounts() const = 0;
     /// Places moving boundaries (pose now, velocity over the coming interval).
     virtual void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) = 0;
     /// One force evaluation; returns the dt maxima.

@@ -42,6 +42,8 @@ public:
 
     void init(const BackendSetup& s) override {
         setup_ = s;
+        sorted_ = false;
+        counts_ = DivideCounts{};
         nbound_ = s.nbound;
         nfluid_ = s.nfluid;
         const std::size_t np = std::size_t(s.nbound) + s.nfluid;
@@ -78,6 +80,15 @@ public:
     }
 
     void divide(bool keep_step_start) override {
+        ++counts_.divides;
+        if (sorted_ && setup_.grid.skinf > 0.f) {
+            // Only moving boundaries and solids move in the boundary block.
+            const std::uint32_t b = setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_;
+            if (exec_.reduce(b, nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid}, OrCombine{}) == 0u)
+                return;
+        }
+        ++counts_.sorts;
+        sorted_ = true;
         const bool pre = !setup_.symplectic || keep_step_start;
         // Moving boundaries and solid particles move inside the boundary block: re-sort it, and
         // find the solid particles again. Fixed walls stay as init sorted them.
@@ -183,6 +194,7 @@ public:
         copyToHost(gauge_positions_, out.positions);
     }
 
+    DivideCounts divideCounts() const override { return counts_; }
     std::uint32_t activeFluid() const override { return nfluid_; }
     void synchronize() override { exec_.synchronize(); }
 
@@ -307,6 +319,8 @@ private:
     Exec exec_;
     BackendSetup setup_;
     std::uint32_t nbound_ = 0, nfluid_ = 0;
+    bool sorted_ = false;  ///< the fluid block was sorted once (divide)
+    DivideCounts counts_;
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint64_t> keys_alt_;
     Buf<std::uint32_t> perm_alt_;

@@ -136,6 +136,10 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
                 int x0, y0, z0, x1, y1, z1;
                 physics::cellOf(g, physics::Double3{sp.point0.x - r, sp.point0.y - r, sp.point0.z - r}, x0, y0, z0);
                 physics::cellOf(g, physics::Double3{sp.point0.x + r, sp.point0.y + r, sp.point0.z + sp.height + r}, x1, y1, z1);
+                if (g.skinf > 0.f) {  // a particle may lie up to the skin (< 1 cell) outside its cell
+                    x0 = std::max(x0 - 1, 0), y0 = std::max(y0 - 1, 0), z0 = std::max(z0 - 1, 0);
+                    x1 = std::min(x1 + 1, g.ncx - 1), y1 = std::min(y1 + 1, g.ncy - 1), z1 = std::min(z1 + 1, g.ncz - 1);
+                }
                 if (dim_ == 2) y0 = y1 = 0;
                 item.first = std::uint32_t(q_.maxz_rows.size());
                 for (int z = z0; z <= z1; ++z)

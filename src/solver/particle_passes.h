@@ -70,6 +70,18 @@ struct PosCellPass {
     SEASPRING_HD void operator()(std::uint32_t i) const { physics::posCellAt(i, v, g); }
 };
 
+/// Between two sorts: refreshes particle i's PosCell in its cell; 1 when a sort is due
+/// (reduced with OrCombine; each index is visited once).
+struct RefreshPosCellPass {
+    physics::ParticleView v;
+    physics::CellGrid g;
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const { return physics::refreshPosCellAt(i, v, g); }
+};
+
+struct OrCombine {
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t a, std::uint32_t b) const { return a | b; }
+};
+
 // ---- moving boundaries, integration ------------------------------------------------------
 
 struct MotionPass {

@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
+#include "physics/cell_grid.h"
 
 namespace seaspring::solver {
 
@@ -98,6 +99,7 @@ void declareOptions(CLI::App& app) {
     optional("--svres");
     value("--nsteps");
     value("--cellmode");
+    value("--skin");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
     value("--progress");
@@ -211,6 +213,11 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (o.cell_div < 0)
                 usageError(g.arg + ": \"" + g.value +
                            "\" is not a cell mode (supported: auto, full, h, third, quarter)");
+        } else if (name == "skin") {
+            o.skin = toDouble(g, Range::NonNegative);
+            if (*o.skin > physics::kMaxSkinFraction)
+                usageError(g.arg + ": " + g.value + " is larger than 0.5" +
+                           " (the skin is a fraction of the cell size)");
         } else if (name == "vcpmsubsteps") {
             o.solid_substeps = int(toInteger(g, 0, 1000000));
         } else if (name == "vcpmcoupling") {
@@ -309,6 +316,13 @@ Run control:
                        more rows of cells to visit. auto (default): quarter in 3D and
                        h in 2D, or the next coarser mode if the grid would exceed 16
                        cells per particle + 2^20 or a 32-bit packed cell
+  -skin:F              skin of the neighbour cells, a fraction 0 <= F <= 0.5 of the cell
+                       size (default 0.05): particles keep their cell while they stay
+                       within F cells of it, and the particles are sorted again only
+                       when one leaves (or is excluded); the search reaches F further.
+                       0: sorted twice per step, as DualSPHysics. Results depend on it
+                       at rounding level (the neighbour order), so hashes compare runs
+                       of the same skin
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of
                        int(dt_F/dt_S)+1 (convergence studies; 0: automatic). The solid
                        is unstable when dt_F/N exceeds its stability limit

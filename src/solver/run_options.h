@@ -31,6 +31,9 @@ struct RunOptions {
     std::optional<long long> nsteps;  ///< stop after this many steps
     /// Cells of 2h/cell_div: 1 -cellmode:full, 2 h, 3 third, 4 quarter; 0 auto (resolveCellDiv).
     int cell_div = 0;
+    /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
+    /// at every divide); unset: kDefaultSkinFraction (physics/cell_grid.h).
+    std::optional<double> skin;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
     double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none

@@ -37,6 +37,8 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("physical_time_s", s.physical_time);
     j.value("last_dt_s", s.dt_last);
     j.value("dtmin_hits", s.dtmin_hits);
+    j.value("divides", static_cast<long long>(s.divides));
+    j.value("sorts", static_cast<long long>(s.sorts));
     j.value("wall_time_s", s.wall_time);
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);
@@ -68,9 +70,9 @@ void printSummary(std::ostream& os, const RunSummary& s) {
     os << line;
     std::snprintf(line, sizeof line,
                   "Particles: %u (fluid %u, active at end %u); excluded: %u out of domain, %u density, %u "
-                  "not finite; dt adjusted to DtMin %lld times\n",
+                  "not finite; dt adjusted to DtMin %lld times; sorted at %llu of %llu divides\n",
                   s.np, s.nfluid, s.fluid_active, s.excluded_position, s.excluded_density,
-                  s.excluded_not_finite, s.dtmin_hits);
+                  s.excluded_not_finite, s.dtmin_hits, s.sorts, s.divides);
     os << line;
     if (s.nsolid > 0) {
         std::snprintf(line, sizeof line,

@@ -30,7 +30,7 @@ std::string fmt(const char* f, double v) {
 const char* kernelName(int k) { return k == 1 ? "cubic spline" : "Wendland C2"; }
 }  // namespace
 
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div) {
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin) {
     std::ostringstream s;
     s << dim << "D, " << (p.step_algorithm == 2 ? "symplectic" : "Verlet");
     if (p.step_algorithm == 1) s << " (Euler every " << p.verlet_steps << ")";
@@ -43,6 +43,7 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div) {
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
     static const char* const kCells[] = {"?", "2h", "h", "2h/3", "h/2"};
     s << ", DBC, CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
+    if (skin > 0) s << " with a skin of " << skin << " cell";
     return s.str();
 }
 
@@ -59,7 +60,9 @@ int resolveCellDiv(const SolverCase& c, int cell_div) {
     return 1;
 }
 
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
+double resolveSkin(const RunOptions& o) { return o.skin.value_or(physics::kDefaultSkinFraction); }
+
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
     using namespace physics;
     cell_div = resolveCellDiv(c, cell_div);
     const ParticleSet& ps = c.particles;
@@ -99,7 +102,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div) {
     s.sps = makeSpsConstants(dp, c.constants.dimensions);
 
     if (!makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
-                      c.domain_max.z, h, cell_div, s.grid))
+                      c.domain_max.z, h, cell_div, s.grid, skin))
         throwInputError(c.xml_path, 0, "the simulation domain is too large for the cell grid (" +
                         std::to_string(s.grid.ncx) + " x " + std::to_string(s.grid.ncy) + " x " +
                         std::to_string(s.grid.ncz) + " cells of " + fmt("%g", s.grid.cellsize) + " m)");
@@ -164,7 +167,7 @@ struct Simulation::Ledger {
 Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr<Backend> backend,
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
-    setup_ = makeBackendSetup(c, o.cell_div);
+    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o));
     fs::create_directories(opt_.outdir);
     if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir);
     if (!setup_.solid.empty()) ledger_ = std::make_shared<Ledger>(opt_.outdir);
@@ -178,7 +181,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nmoving = c.nmoving;
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
-    sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.range);
+    sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o));
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (!setup_.solid.empty()) {

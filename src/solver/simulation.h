@@ -29,6 +29,7 @@ struct RunSummary {
     std::uint32_t excluded_position = 0, excluded_density = 0, excluded_not_finite = 0;
     long long steps = 0;
     long long dtmin_hits = 0;
+    unsigned long long divides = 0, sorts = 0;  ///< divides, and those that sorted (skin)
     double physical_time = 0, wall_time = 0, loop_time = 0;
     double ns_per_particle_step = 0;
     double dt_last = 0;
@@ -44,8 +45,11 @@ struct RunSummary {
     std::uint64_t bonds = 0, clamp_bonds = 0, broken_bonds = 0;  ///< bonds counted once
 };
 
-/// Builds the backend's initial data from the case (particles in id order).
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div);
+/// Builds the backend's initial data from the case (particles in id order); cells of
+/// 2h/cell_div (resolveCellDiv) with a skin of `skin` cells (cell_grid.h).
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin);
+/// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
+double resolveSkin(const RunOptions& o);
 /// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) 4 in 3D
 /// (cells of h/2: on an H100, SPHERIC Test 2 at 4.4 M particles runs 13% faster than with cells
 /// of h) and 2 in 2D, each the finest whose grid fits 32-bit packed cells and at most
@@ -94,6 +98,6 @@ private:
 };
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div);
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin);
 
 }  // namespace seaspring::solver

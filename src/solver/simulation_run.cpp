@@ -104,6 +104,9 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     sum_.loop_time = loop_time;
     sum_.ns_per_particle_step = step > 0 ? loop_time * 1e9 / (double(step) * double(sum_.np)) : 0;
     sum_.dtmin_hits = counters.dtmin_hits;
+    const DivideCounts dc = backend_->divideCounts();
+    sum_.divides = dc.divides;
+    sum_.sorts = dc.sorts;
     sum_.solid_substeps = counters.solid_substeps;
     sum_.omega_max = counters.omega_max;
     if (setup_.solid.empty()) return;

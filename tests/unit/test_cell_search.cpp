@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <random>
@@ -72,20 +73,32 @@ namespace {
 /// Random particles in a box, cell-sorted, with their block's cell starts; then, for every
 /// particle, the neighbours found through forEachCandidateRow against all particles tested with
 /// the same pair offset (the frame of the row holding the partner, as hydroForceOnBoundary).
+/// With `skin` > 0 every particle is then moved by up to the skin (along each axis, most of
+/// them nearly that far) and keeps the cell it was sorted into (posCellInCell), as between two
+/// sorts of a run: the rows must still hold every neighbour.
 template <int kDim>
-void checkCandidateRows(int div, std::mt19937& rng) {
+void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
     const double h = 0.03;
     CellGrid g;
-    ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.4, kDim == 3 ? 0.25 : 0.0, 0.3, h, div, g));
+    ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.4, kDim == 3 ? 0.25 : 0.0, 0.3, h, div, g, skin));
     FluidConstants c;
     c.ker.kernelsize2 = float((2.0 * h) * (2.0 * h));
     const std::uint32_t n = kDim == 3 ? 1500 : 500;
     std::uniform_real_distribution<double> ux(0, 0.4), uy(0, 0.25), uz(0, 0.3);
     std::vector<Float4> pc(n);
     std::vector<std::uint32_t> cell(n), order(n);
+    std::uniform_real_distribution<double> far(0.9, 1.0);
+    std::bernoulli_distribution sign(0.5);
+    auto move = [&] { return (sign(rng) ? 1.0 : -1.0) * far(rng) * skin * g.cellsize; };
     for (std::uint32_t i = 0; i < n; ++i) {
         const Double3 p{ux(rng), kDim == 3 ? uy(rng) : 0.0, uz(rng)};
         pc[i] = makePosCell(g, p, cell[i]);
+        if (skin > 0) {
+            const Double3 moved{p.x + move(), kDim == 3 ? p.y + move() : 0.0, p.z + move()};
+            bool outside = true;
+            pc[i] = posCellInCell(g, moved, pc[i].w, outside);
+            ASSERT_FALSE(outside) << "particle " << i << " moved out of the skin";
+        }
     }
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return cell[a] < cell[b]; });
@@ -122,7 +135,7 @@ void checkCandidateRows(int div, std::mt19937& rng) {
             if (isNeighbour(pairOffset<kDim>(rowFrame(psa, rowdy, rowdz), psb, cax, g, dx, dy, dz), c))
                 expected.push_back(b);
         }
-        ASSERT_EQ(found, expected) << kDim << "D, cells of 2h/" << div << ", particle " << a;
+        ASSERT_EQ(found, expected) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
         pairs += static_cast<long long>(found.size());
         ASSERT_LT(seen.size(), std::size_t(n));  // the rows leave most particles out
     }
@@ -137,4 +150,29 @@ TEST(CellSearch, CandidateRowsHoldEveryNeighbourInSortedOrder) {
         checkCandidateRows<2>(div, rng);
         checkCandidateRows<3>(div, rng);
     }
+}
+
+TEST(CellSearch, CandidateRowsHoldEveryNeighbourOfParticlesMovedWithinTheSkin) {
+    std::mt19937 rng(5);
+    for (int div : {1, 2, 4})
+        for (double skin : {0.05, kMaxSkinFraction}) {
+            checkCandidateRows<2>(div, rng, skin);
+            checkCandidateRows<3>(div, rng, skin);
+        }
+}
+
+TEST(CellSearch, APositionOutsideTheSkinOfItsCellAsksForASort) {
+    CellGrid g;
+    ASSERT_TRUE(makeCellGrid(0, 0, 0, 1, 1, 1, 0.05, 2, g, 0.1));  // cells of 0.05 m, skin 5 mm
+    std::uint32_t cell;
+    const Float4 pc = makePosCell(g, Double3{0.52, 0.51, 0.53}, cell);
+    bool outside = true;
+    posCellInCell(g, Double3{0.5 - 0.004, 0.51, 0.53}, pc.w, outside);
+    EXPECT_FALSE(outside);
+    posCellInCell(g, Double3{0.5 - 0.006, 0.51, 0.53}, pc.w, outside);
+    EXPECT_TRUE(outside);
+    posCellInCell(g, Double3{0.52, 0.55 + 0.006, 0.53}, pc.w, outside);
+    EXPECT_TRUE(outside);
+    posCellInCell(g, Double3{0.52, 0.51, std::nan("")}, pc.w, outside);
+    EXPECT_TRUE(outside);
 }
