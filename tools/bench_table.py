@@ -1,0 +1,378 @@
+#!/usr/bin/env python3
+"""Records and tables for tools/bench.sh (issue 16's speed benchmark set).
+
+Standard library only (the GPU machine's python3 has no numpy). Subcommands:
+
+  record RAW BENCH BUILD ROUND KIND RUN_JSON [--status S] [--note N]
+      append one row to the raw results CSV from a seaspring run.json; KIND says which
+      figure the benchmark reports (see FIGURES). A missing or unreadable run.json, or a
+      status other than ok, records the row as that status (FAILED by default).
+  memory RAW BENCH BUILD ROUND SAMPLES PARTICLES [--device D] [--note N]
+      append the peak of the nvidia-smi memory.used samples (MiB, one a line).
+  sluice-done LOG T0 NSTEPS
+      exit 0 when the solver log's progress lines hold a window of NSTEPS steps that starts
+      at the first line with t >= T0 (bench.sh then stops the run), 1 otherwise.
+  sluice RAW BUILD ROUND LOG T0 NSTEPS TEND [--status S] [--note N]
+      append the sluice estimate (hours for TEND simulated seconds) from the progress lines.
+  table RAW CSV_OUT
+      print the table (fixed-width plain text) and write it as CSV.
+  runs RAW
+      print the raw rows, fixed width.
+
+Raw rows (one per run): bench, build (new|base), round, status (ok|FAILED|TIMEOUT|SKIPPED),
+particles, steps, physical_time_s, loop_time_s, ns_per_particle_step, value (the figure in
+the benchmark's unit), device, backend, threads, state_hash, note.
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import statistics
+import sys
+
+RAW_FIELDS = ["bench", "build", "round", "status", "particles", "steps", "physical_time_s",
+              "loop_time_s", "ns_per_particle_step", "value", "device", "backend", "threads",
+              "state_hash", "note"]
+
+# How a run.json becomes the benchmark's figure.
+FIGURES = {
+    "ns": lambda r: r["ns_per_particle_step"],                        # ns / particle / step
+    "us": lambda r: r["ns_per_particle_step"] / 1000.0,               # µs / particle / step
+    "ms_per_step": lambda r: 1e3 * r["loop_time_s"] / r["steps"],     # ms / step
+    "s_per_sim_s": lambda r: r["loop_time_s"] / r["physical_time_s"], # wall s / simulated s
+    "loop_s": lambda r: r["loop_time_s"],                             # s of time loop
+}
+
+# DualSPHysics' figures (and the other references), with their sources.
+DS_SRC_README = "shared/dualsphysics-cases/README.md: DualSPHysics 5.4 GPU, one H200, -symplectic -ddt:3 -cellmode:h, Wendland, artificial viscosity, DBC, first 0.02 s"
+REFERENCES = {
+    "spheric_1.12M": (4.58, "ns", DS_SRC_README + " (195.6 steps/s)"),
+    "spheric_4.36M": (4.48, "ns", DS_SRC_README + " (51.2 steps/s)"),
+    "spheric_13.29M": (4.74, "ns", DS_SRC_README + " (15.9 steps/s)"),
+    "spheric_4.36M_sps": (5.93, "ns", DS_SRC_README + ", laminar+SPS viscosity (38.7 steps/s)"),
+    "mem_marginal": (230.0, "B", "issue 16: DualSPHysics about 230 B per particle (SeaSpring was about 250 B before issue 16)"),
+    "liao2d": (152.0, "s", "issue 16: DualSPHysics FlexStruc (TLSPH plate), CaseDambreak2D_FSI, 152 s per simulated second"),
+    "liao3d": (33.8, "s", "issue 16: DualSPHysics FlexStruc (TLSPH plate), CaseDambreak3D_FSI, first 0.02 s in 33.8 s"),
+    "cpu_100K": (3.0, "us", "shared/dualsphysics-cases/README.md: DualSPHysics 5.4 CPU, 2 OpenMP threads, 2-core dev machine, Spheric2Dam_100K, 2.84 steps/s"),
+    "antoci2d": (1.04, "ms", "not DualSPHysics: SeaSpring at commit 85a1056 on an H100 (issue 16's baseline for the 4x target)"),
+    "sluice3d": (34904.0 / 3600.0, "h", "not DualSPHysics: seed paper 000 Table 3, SPH-VCPM, 34,904 s on a Quadro RTX 8000 (8.4-13.5 M SPH particles)"),
+}
+
+# Issue 16's targets: (limit, goal or None, text); every figure here is better when lower.
+TARGETS = {
+    "spheric_1.12M": (2.2, 1.5, "<= 2.2 ns (goal 1.5)"),
+    "spheric_4.36M": (2.2, 1.5, "<= 2.2 ns (goal 1.5)"),
+    "spheric_13.29M": (2.2, 1.5, "<= 2.2 ns (goal 1.5)"),
+    "spheric_4.36M_sps": (3.0, 2.0, "<= 3.0 ns (goal 2.0)"),
+    "mem_marginal": (150.0, 120.0, "<= 150 B (goal 120)"),
+    "liao2d": (60.0, None, "<= 60 s/sim s"),
+    "antoci2d": (0.26, None, "<= 0.26 ms (4x 1.04)"),
+    "liao3d": (15.0, None, "<= 15 s"),
+    "sluice3d": (1.5, None, "<= 1.5 h"),
+    "cpu_100K": (0.35 * 3.0, None, "<= 1.05 us (0.35x DS)"),
+}
+
+# Table rows in order: key, label, unit, number format, particle count of the reference case.
+BENCHES = [
+    ("spheric_1.12M", "SPHERIC 1.12 M fluid", "ns/particle/step", "{:.3f}", 1116258),
+    ("spheric_4.36M", "SPHERIC 4.36 M fluid", "ns/particle/step", "{:.3f}", 4360716),
+    ("spheric_13.29M", "SPHERIC 13.29 M fluid", "ns/particle/step", "{:.3f}", 13292664),
+    ("spheric_4.36M_sps", "SPHERIC 4.36 M laminar+SPS", "ns/particle/step", "{:.3f}", 4360716),
+    ("mem_peak_4.36M", "GPU memory peak, 4.36 M run", "MiB (memory.used)", "{:.0f}", 4360716),
+    ("mem_peak_13.29M", "GPU memory peak, 13.29 M run", "MiB (memory.used)", "{:.0f}", 13292664),
+    ("mem_marginal", "GPU memory per particle", "B/particle (marginal)", "{:.1f}", None),
+    ("antoci2d", "Antoci gate 2D", "ms/step", "{:.4f}", None),
+    ("liao2d", "FlexStruc Liao 2D", "s per simulated s", "{:.2f}", None),
+    ("liao3d", "FlexStruc Liao 3D, first 0.02 s", "s (loop)", "{:.2f}", None),
+    ("sluice3d", "Sluice gate 3D dp 1 mm, 2 s (extrap.)", "h (estimate)", "{:.3f}", None),
+    ("cpu_100K", "CPU 2 threads Spheric2Dam_100K", "us/particle/step", "{:.3f}", 116658),
+]
+MEM_PAIR = ("mem_peak_4.36M", "mem_peak_13.29M")
+MIB = 1024.0 * 1024.0
+
+
+def append_row(raw, row):
+    new = not os.path.exists(raw) or os.path.getsize(raw) == 0
+    with open(raw, "a", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=RAW_FIELDS)
+        if new:
+            w.writeheader()
+        w.writerow({k: row.get(k, "") for k in RAW_FIELDS})
+    shown = {k: row.get(k, "") for k in ("bench", "build", "round", "status", "particles", "steps", "value", "state_hash")}
+    print("  recorded: " + "  ".join(f"{k}={v}" for k, v in shown.items() if v != "")
+          + (f"  ({row['note']})" if row.get("note") else ""))
+
+
+def cmd_record(a):
+    row = {"bench": a.bench, "build": a.build, "round": a.round, "status": a.status, "note": a.note}
+    if a.status == "ok":
+        try:
+            with open(a.run_json) as f:
+                r = json.load(f)
+            row.update(particles=r["particles"]["total"], steps=r["steps"],
+                       physical_time_s=f"{r['physical_time_s']:.6g}", loop_time_s=f"{r['loop_time_s']:.4f}",
+                       ns_per_particle_step=f"{r['ns_per_particle_step']:.4f}",
+                       value=f"{FIGURES[a.kind](r):.6g}", device=r.get("device", ""),
+                       backend=r.get("backend", ""), threads=r.get("threads", ""),
+                       state_hash=r.get("state_hash", ""))
+        except (OSError, ValueError, KeyError, ZeroDivisionError) as e:
+            row.update(status="FAILED", note=(a.note + "; " if a.note else "") + f"run.json: {e}")
+    append_row(a.raw, row)
+
+
+def cmd_memory(a):
+    vals = []
+    try:
+        with open(a.samples) as f:
+            for line in f:
+                try:
+                    vals.append(float(line.strip().split(",")[0]))
+                except ValueError:
+                    pass
+    except OSError:
+        pass
+    row = {"bench": a.bench, "build": a.build, "round": a.round, "particles": a.particles,
+           "device": a.device, "backend": "cuda", "note": a.note}
+    if vals:
+        row.update(status="ok", value=f"{max(vals):.0f}",
+                   note=(a.note + "; " if a.note else "") + f"{len(vals)} samples")
+    else:
+        row.update(status="FAILED", note=(a.note + "; " if a.note else "") + "no memory samples")
+    append_row(a.raw, row)
+
+
+PROGRESS = re.compile(r"^t=([0-9.eE+-]+)/\S+ s\s+steps=(\d+)\s+dt=\S+\s+[0-9.]+ steps/s\s+([0-9.]+) ns/particle/step")
+BANNER_NP = re.compile(r"^\s*particles:\s*(\d+)")
+BANNER_DEVICE = re.compile(r"^\s*backend:\s*(\S+) \((.*)\)")
+
+
+def read_progress(log):
+    """(particles, device, [(t, steps, elapsed_s)]) from a solver log with progress lines."""
+    np_, dev, pts = None, "", []
+    try:
+        with open(log, errors="replace") as f:
+            for line in f:
+                m = BANNER_NP.match(line)
+                if m and np_ is None:
+                    np_ = int(m.group(1))
+                m = BANNER_DEVICE.match(line)
+                if m and not dev:
+                    dev = m.group(2)
+                m = PROGRESS.match(line)
+                if m and np_:
+                    t, s, ns = float(m.group(1)), int(m.group(2)), float(m.group(3))
+                    pts.append((t, s, ns * 1e-9 * s * np_))  # the line's ns is loop time / (steps * particles)
+    except OSError:
+        pass
+    return np_, dev, pts
+
+
+def sluice_window(pts, t0, nsteps):
+    """The window: from the first progress line at t >= t0 to the first line nsteps steps later
+    (or the last line); None if fewer than two lines."""
+    start = next((i for i, p in enumerate(pts) if p[0] >= t0), None)
+    if start is None or start + 1 >= len(pts):
+        return None, False
+    end = next((i for i in range(start + 1, len(pts)) if pts[i][1] - pts[start][1] >= nsteps), None)
+    return (pts[start], pts[end if end is not None else -1]), end is not None
+
+
+def cmd_sluice_done(a):
+    _, _, pts = read_progress(a.log)
+    _, complete = sluice_window(pts, a.t0, a.nsteps)
+    sys.exit(0 if complete else 1)
+
+
+def cmd_sluice(a):
+    np_, dev, pts = read_progress(a.log)
+    win, complete = sluice_window(pts, a.t0, a.nsteps)
+    row = {"bench": "sluice3d", "build": a.build, "round": a.round, "particles": np_ or "",
+           "device": a.device or dev, "note": a.note}
+    if win is None:
+        row.update(status="FAILED" if a.status == "ok" else a.status,
+                   note=(a.note + "; " if a.note else "") + f"no window: {len(pts)} progress lines, none after t0={a.t0} s with a later one")
+        append_row(a.raw, row)
+        return
+    (ta, sa, ea), (tb, sb, eb) = win
+    steps, wall, sim = sb - sa, eb - ea, tb - ta
+    steps_per_sim_s = steps / sim
+    ms_per_step = 1e3 * wall / steps
+    hours = a.tend * steps_per_sim_s * ms_per_step * 1e-3 / 3600.0
+    note = (f"window t={ta:.5f}..{tb:.5f} s, steps {sa}..{sb}: {ms_per_step:.2f} ms/step, "
+            f"{steps_per_sim_s:.0f} steps per simulated s, {wall / sim:.0f} s per simulated s")
+    if not complete:
+        note += f"; window cut short ({steps} of {a.nsteps} steps)"
+    row.update(status="ok", steps=steps, physical_time_s=f"{sim:.6g}", loop_time_s=f"{wall:.4f}",
+               ns_per_particle_step=f"{wall * 1e9 / (steps * np_):.4f}", value=f"{hours:.6g}",
+               note=(a.note + "; " if a.note else "") + note)
+    append_row(a.raw, row)
+
+
+def ref_text(ref):
+    v, unit = ref[0], ref[1]
+    return (f"{v:.2f}" if v < 10 else f"{v:.1f}" if v < 100 else f"{v:.0f}") + " " + unit
+
+
+def med(xs):
+    return statistics.median(xs) if xs else None
+
+
+def fmt(v, f):
+    return "-" if v is None else f.format(v)
+
+
+def cmd_table(a):
+    with open(a.raw, newline="") as f:
+        rows = list(csv.DictReader(f))
+    has_base = any(r["build"] == "base" for r in rows)
+
+    def ok(bench, build):
+        return [r for r in rows if r["bench"] == bench and r["build"] == build and r["status"] == "ok"]
+
+    def figure(bench, build):
+        return med([float(r["value"]) for r in ok(bench, build)])
+
+    def marginal(build):
+        """(peak13 - peak4) / (n13 - n4) per round, median over the rounds [B/particle]."""
+        per = []
+        rounds = {r["round"] for r in rows if r["bench"] in MEM_PAIR and r["build"] == build}
+        for rd in sorted(rounds):
+            p = [next((r for r in ok(b, build) if r["round"] == rd), None) for b in MEM_PAIR]
+            if all(p) and int(p[1]["particles"]) != int(p[0]["particles"]):
+                per.append((float(p[1]["value"]) - float(p[0]["value"])) * MIB
+                           / (int(p[1]["particles"]) - int(p[0]["particles"])))
+        return med(per)
+
+    head = ["benchmark", "particles", "SeaSpring", "unit"]
+    if has_base:
+        head += ["base", "new/base"]
+    head += ["DualSPHysics/ref", "target", "met", "device", "state hash"]
+    if has_base:
+        head += ["hash=base"]
+    table, notes = [head], []
+    for key, label, unit, f, expect in BENCHES:
+        mine = [r for r in rows if r["bench"] == key]
+        if key == "mem_marginal":
+            if not any(r["bench"] in MEM_PAIR for r in rows):
+                continue
+            mine = [r for r in rows if r["bench"] in MEM_PAIR]
+            new, base = marginal("new"), marginal("base")
+            parts = "-"
+            pn = [ok(b, "new") for b in MEM_PAIR]
+            if all(pn):
+                parts = f"{int(pn[0][0]['particles']):,} -> {int(pn[1][0]['particles']):,}"
+        else:
+            if not mine:
+                continue
+            new, base = figure(key, "new"), figure(key, "base")
+            pn = ok(key, "new") or [r for r in mine if r["particles"]]
+            parts = f"{int(pn[0]['particles']):,}" if pn and pn[0]["particles"] else "-"
+            if expect and pn and pn[0]["particles"] and int(pn[0]["particles"]) != expect:
+                parts += " !"
+                notes.append(f"{label}: {int(pn[0]['particles']):,} particles, not the reference's {expect:,} (dp or case overridden?)")
+        new_rows = [r for r in mine if r["build"] == "new"]
+        if new is None:
+            bad = sorted({r["status"] for r in new_rows if r["status"] != "ok"}) or ["FAILED"]
+            shown = "/".join(bad)
+        else:
+            shown = fmt(new, f)
+            nbad = sum(r["status"] != "ok" for r in new_rows)
+            if nbad:
+                shown += f" ({nbad} failed)"
+        ref = REFERENCES.get(key)
+        tgt = TARGETS.get(key)
+        met = "-"
+        if tgt and new is not None:
+            met = "goal" if tgt[1] is not None and new <= tgt[1] else ("yes" if new <= tgt[0] else "no")
+        devs = sorted({r["device"] for r in new_rows if r["device"]})
+        hashes = sorted({r["state_hash"] for r in ok(key, "new") if r["state_hash"]})
+        line = [label, parts, shown, unit]
+        if has_base:
+            ratio = f"{new / base:.3f}" if new is not None and base else "-"
+            line += [fmt(base, f), ratio]
+        line += [ref_text(ref) if ref else "-", tgt[2] if tgt else "-", met,
+                 "/".join(devs) or "-", "/".join(hashes) or "-"]
+        if has_base:
+            bh = sorted({r["state_hash"] for r in ok(key, "base") if r["state_hash"]})
+            line += ["-" if not (hashes and bh) else ("same" if bh == hashes else "DIFFERS")]
+        table.append(line)
+        bad = {}  # the same failure in several runs is noted once
+        for r in mine if key != "mem_marginal" else []:
+            if r["status"] != "ok":
+                bad.setdefault((r["status"], r["note"]), []).append(f"{r['build']} {r['round']}")
+        notes += [f"{label} {st} ({', '.join(runs)}): {nt or 'no detail'}" for (st, nt), runs in bad.items()]
+        if key == "sluice3d":
+            notes += [f"{label} [{r['build']} round {r['round']}]: {r['note']}" for r in ok(key, "new") + ok(key, "base")]
+    if len(table) == 1:
+        print("(no results)")
+    w = [max(len(str(r[i])) for r in table) for i in range(len(head))]
+    for i, r in enumerate(table):
+        print("  ".join(str(c).ljust(w[j]) for j, c in enumerate(r)).rstrip())
+        if i == 0:
+            print("  ".join("-" * w[j] for j in range(len(head))))
+    rounds = sorted({r["round"] for r in rows})
+    print(f"Figures: medians over {len(rounds)} round(s) of the runs that succeeded"
+          + ("; new/base: same machine, runs alternated base, new." if has_base else "."))
+    print("met: goal = issue 16's goal reached, yes = its target met, no = not met.")
+    print("References:")
+    for key, label, *_ in BENCHES:
+        if key in REFERENCES and any(t[0] == label for t in table[1:]):
+            print(f"  {label}: {REFERENCES[key][2]}")
+    for n in notes:
+        print("Note: " + n)
+    with open(a.csv_out, "w", newline="") as f:  # particles as plain integers
+        csv.writer(f).writerows([table[0]] + [[r[0], r[1].replace(",", "").replace(" !", "")] + r[2:] for r in table[1:]])
+
+
+def cmd_runs(a):
+    with open(a.raw, newline="") as f:
+        rows = list(csv.reader(f))
+    w = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    for r in rows:
+        print("  ".join(c.ljust(w[i]) for i, c in enumerate(r)).rstrip())
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = p.add_subparsers(dest="cmd", required=True)
+    s = sub.add_parser("record")
+    for n in ("raw", "bench", "build", "round", "kind", "run_json"):
+        s.add_argument(n)
+    s.add_argument("--status", default="ok")
+    s.add_argument("--note", default="")
+    s.set_defaults(fn=cmd_record)
+    s = sub.add_parser("memory")
+    for n in ("raw", "bench", "build", "round", "samples", "particles"):
+        s.add_argument(n)
+    s.add_argument("--device", default="")
+    s.add_argument("--note", default="")
+    s.set_defaults(fn=cmd_memory)
+    s = sub.add_parser("sluice-done")
+    s.add_argument("log")
+    s.add_argument("t0", type=float)
+    s.add_argument("nsteps", type=int)
+    s.set_defaults(fn=cmd_sluice_done)
+    s = sub.add_parser("sluice")
+    for n in ("raw", "build", "round", "log"):
+        s.add_argument(n)
+    s.add_argument("t0", type=float)
+    s.add_argument("nsteps", type=int)
+    s.add_argument("tend", type=float)
+    s.add_argument("--status", default="ok")
+    s.add_argument("--device", default="")
+    s.add_argument("--note", default="")
+    s.set_defaults(fn=cmd_sluice)
+    s = sub.add_parser("table")
+    s.add_argument("raw")
+    s.add_argument("csv_out")
+    s.set_defaults(fn=cmd_table)
+    s = sub.add_parser("runs")
+    s.add_argument("raw")
+    s.set_defaults(fn=cmd_runs)
+    a = p.parse_args()
+    a.fn(a)
+
+
+if __name__ == "__main__":
+    main()
