@@ -85,26 +85,24 @@ public:
         }
     }
 
-    /// Sorts keys[b, e) ascending, carrying perm[b, e) along (keys are unique, so the order is
-    /// the only sorted order). The *_alt buffers are scratch of the same size.
-    void sortPairs(Buffer<std::uint64_t>& keys, Buffer<std::uint64_t>& keys_alt, Buffer<std::uint32_t>& perm,
-                   Buffer<std::uint32_t>& /*perm_alt*/, std::uint32_t b, std::uint32_t e) const {
-        const std::uint64_t* k = keys.data();
-        std::sort(perm.begin() + b, perm.begin() + e, [k](std::uint32_t x, std::uint32_t y) { return k[x] < k[y]; });
-        keys_alt.resize(keys.size());
-        const std::uint32_t* p = perm.data();
-        std::uint64_t* ka = keys_alt.data();
+    /// Sorts keys[b, e) ascending, carrying perm[b, e) (the identity on entry) along; keys are
+    /// unique, so the order is the only sorted order. keys_alt[b, e) is scratch (perm_alt is
+    /// not needed here). The result is in keys and perm.
+    void sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* /*perm_alt*/,
+                   std::uint32_t b, std::uint32_t e) const {
+        const std::uint64_t* k = keys;
+        std::sort(perm + b, perm + e, [k](std::uint32_t x, std::uint32_t y) { return k[x] < k[y]; });
+        const std::uint32_t* p = perm;
 #pragma omp parallel for num_threads(threads_) schedule(static)
-        for (std::int64_t i = b; i < std::int64_t(e); ++i) ka[i] = k[p[i]];
-        std::copy(keys_alt.begin() + b, keys_alt.begin() + e, keys.begin() + b);
+        for (std::int64_t i = b; i < std::int64_t(e); ++i) keys_alt[i] = k[p[i]];
+        std::copy(keys_alt + b, keys_alt + e, keys + b);
     }
     /// Size the sort's scratch for n keys (nothing to do on the host).
     void prepareSort(std::size_t) {}
 
     /// First index in [b, e) of sorted keys whose key is >= value.
-    std::uint32_t lowerBound(const Buffer<std::uint64_t>& keys, std::uint32_t b, std::uint32_t e,
-                             std::uint64_t value) const {
-        return std::uint32_t(std::lower_bound(keys.begin() + b, keys.begin() + e, value) - keys.begin());
+    std::uint32_t lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e, std::uint64_t value) const {
+        return std::uint32_t(std::lower_bound(keys + b, keys + e, value) - keys);
     }
 
     template <typename T>

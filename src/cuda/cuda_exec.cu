@@ -39,26 +39,27 @@ CudaExec::CudaExec(int device) {
 
 void CudaExec::prepareSort(std::size_t n) {
     std::size_t temp = 0;
-    DeviceBuffer<std::uint64_t> k(n > 0 ? n : 1), ka(n > 0 ? n : 1);
-    DeviceBuffer<std::uint32_t> p(n > 0 ? n : 1), pa(n > 0 ? n : 1);
-    SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp, k.data(), ka.data(), p.data(), pa.data(), int(n)));
+    cub::DoubleBuffer<std::uint64_t> k(nullptr, nullptr);  // a size query reads no buffer
+    cub::DoubleBuffer<std::uint32_t> p(nullptr, nullptr);
+    SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp, k, p, int(n)));
     sort_temp_.resize(temp > 0 ? temp : 1);
 }
 
-void CudaExec::sortPairs(Buffer<std::uint64_t>& keys, Buffer<std::uint64_t>& keys_alt, Buffer<std::uint32_t>& perm,
-                         Buffer<std::uint32_t>& perm_alt, std::uint32_t b, std::uint32_t e) const {
+void CudaExec::sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* perm_alt,
+                         std::uint32_t b, std::uint32_t e) const {
     if (e <= b) return;
     std::size_t temp = sort_temp_.size();
-    SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort_temp_.data(), temp, keys.data() + b, keys_alt.data() + b,
-                                                         perm.data() + b, perm_alt.data() + b, int(e - b)));
-    std::swap(keys, keys_alt);
-    std::swap(perm, perm_alt);
+    cub::DoubleBuffer<std::uint64_t> k(keys + b, keys_alt + b);
+    cub::DoubleBuffer<std::uint32_t> p(perm + b, perm_alt + b);
+    SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort_temp_.data(), temp, k, p, int(e - b)));
+    if (k.Current() != keys + b) copy(keys + b, k.Current(), e - b);
+    if (p.Current() != perm + b) copy(perm + b, p.Current(), e - b);
 }
 
-std::uint32_t CudaExec::lowerBound(const Buffer<std::uint64_t>& keys, std::uint32_t b, std::uint32_t e,
+std::uint32_t CudaExec::lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e,
                                    std::uint64_t value) const {
     if (e <= b) return b;
-    lowerBoundKernel<<<1, 1>>>(b, e, keys.data(), value, lower_bound_.data());
+    lowerBoundKernel<<<1, 1>>>(b, e, keys, value, lower_bound_.data());
     SEASPRING_CUDA_LAUNCH_CHECK();
     std::uint32_t r = b;
     SEASPRING_CUDA_CHECK(cudaMemcpy(&r, lower_bound_.data(), sizeof r, cudaMemcpyDeviceToHost));

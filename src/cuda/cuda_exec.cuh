@@ -155,13 +155,12 @@ public:
     }
 
     void prepareSort(std::size_t n);
-    /// Sorts keys[b, e) ascending carrying perm[b, e) (CUB radix sort into the *_alt buffers,
-    /// which are then swapped with keys/perm; outside [b, e) both are stale afterwards).
-    void sortPairs(Buffer<std::uint64_t>& keys, Buffer<std::uint64_t>& keys_alt, Buffer<std::uint32_t>& perm,
-                   Buffer<std::uint32_t>& perm_alt, std::uint32_t b, std::uint32_t e) const;
+    /// Sorts keys[b, e) ascending carrying perm[b, e) (CUB radix sort, the *_alt arrays as its
+    /// second buffers); the result is in keys and perm.
+    void sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* perm_alt,
+                   std::uint32_t b, std::uint32_t e) const;
     /// First index in [b, e) of sorted keys whose key is >= value (synchronises).
-    std::uint32_t lowerBound(const Buffer<std::uint64_t>& keys, std::uint32_t b, std::uint32_t e,
-                             std::uint64_t value) const;
+    std::uint32_t lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e, std::uint64_t value) const;
 
     template <typename T>
     void copy(T* dst, const T* src, std::size_t n) const {

@@ -7,8 +7,7 @@
 ///        order and the state hash (solver/state_hash.cpp), and what a restart file holds.
 ///
 /// Adding a field is one row: X(name, type, when it exists, flags).
-///  - `need`: the runs that allocate it (Always; Symplectic: only with the symplectic scheme;
-///    Sps: only with laminar+SPS viscosity). A field that is not allocated is a null pointer in
+///  - `need`: the runs that allocate it (Always; Sps: only with laminar+SPS viscosity). A field that is not allocated is a null pointer in
 ///    ParticleView.
 ///  - flags (FieldFlag):
 ///      kSorted     reordered by every divide (its value belongs to the particle);
@@ -19,9 +18,12 @@
 ///      kHost       copied back to the host (HostState, id order) for outputs and reports;
 ///      kCheckpoint part of the state a restart needs;
 ///      kHalo       read across a subdomain edge by a neighbour's pair loop (multi-GPU);
-///      kScratch    the sort's scratch: meaningful only inside the range just sorted.
+///      kForceEval  a force evaluation's result: meaningful from the force evaluation until
+///                  the next divide, whose sort keeps its keys, permutation and gather scratch
+///                  in these fields' memory (solver/engine.h, SortMemory): no second copy of
+///                  the particles for the sort.
 ///    Fields without kSorted are rebuilt before they are read (PosCell by every divide, the
-///    force-evaluation fields by every force evaluation, the sort scratch by the sort).
+///    force-evaluation fields by every force evaluation).
 #pragma once
 
 #include <cstdint>
@@ -37,11 +39,11 @@ enum FieldFlag : unsigned {
     kHost = 8u,
     kCheckpoint = 16u,
     kHalo = 32u,
-    kScratch = 64u,
+    kForceEval = 64u,
 };
 
 /// The runs that allocate a field.
-enum class FieldNeed { Always, Symplectic, Sps };
+enum class FieldNeed { Always, Sps };
 
 // clang-format off
 #define SEASPRING_PARTICLE_FIELDS(X)                                                                        \
@@ -50,15 +52,12 @@ enum class FieldNeed { Always, Symplectic, Sps };
     X(velrho,      ::seaspring::physics::Float4,  Always, kSorted | kHashed | kHost | kCheckpoint | kHalo) \
     X(excl,        std::uint8_t,             Always,     kSorted | kHashed | kHost | kCheckpoint)          \
     X(poscell,     ::seaspring::physics::Float4,  Always, kHalo)                                            \
-    X(press_ovrho, ::seaspring::physics::Float2,  Always, kHalo)                                            \
-    X(pos_pre,     ::seaspring::physics::Double3, Symplectic, kSortedPre | kCheckpoint)                     \
+    X(press_ovrho, ::seaspring::physics::Float2,  Always, kForceEval | kHalo)                               \
     X(velrho_pre,  ::seaspring::physics::Float4,  Always, kSortedPre | kCheckpoint)                         \
-    X(acear,       ::seaspring::physics::Float4,  Always, 0u)                                               \
-    X(visc,        float,                    Always,     0u)                                                \
+    X(acear,       ::seaspring::physics::Float4,  Always, kForceEval)                                       \
+    X(visc,        float,                    Always,     kForceEval)                                        \
     X(tau,         ::seaspring::physics::SymTensor, Sps,  kSorted | kCheckpoint | kHalo)                    \
-    X(gradvel,     ::seaspring::physics::SymTensor, Sps,  0u)                                               \
-    X(keys,        std::uint64_t,            Always,     kScratch)                                                \
-    X(perm,        std::uint32_t,            Always,     kScratch)
+    X(gradvel,     ::seaspring::physics::SymTensor, Sps,  kForceEval)
 // clang-format on
 //  id          particle id (position in the case's id order)
 //  pos         position [m] (double)
@@ -66,18 +65,15 @@ enum class FieldNeed { Always, Symplectic, Sps };
 //  excl        ExclusionReason (0 active)
 //  poscell     cell-relative float position and packed cell (cell_grid.h)
 //  press_ovrho force evaluation: (pressure, 1/rho)
-//  pos_pre     symplectic: position at the start of the step
 //  velrho_pre  symplectic: state at the start of the step; Verlet: state at n-1
 //  acear       force evaluation: (ax, ay, az, d rho/dt)
 //  visc        force evaluation: viscous dt measure
 //  tau         SPS: stress/rho (persistent between evaluations)
 //  gradvel     SPS: velocity gradient of the last evaluation
-//  keys, perm  sort scratch: key (cell, id) and permutation (sorted index -> previous index)
+// (The symplectic step-start position is not kept: the corrector moves on from the
+// predictor's position, time_integration.h.)
 
 /// Whether a run allocates a field with `need`.
-inline bool fieldNeeded(FieldNeed need, bool symplectic, bool sps) {
-    return need == FieldNeed::Always || (need == FieldNeed::Symplectic && symplectic) ||
-           (need == FieldNeed::Sps && sps);
-}
+inline bool fieldNeeded(FieldNeed need, bool sps) { return need == FieldNeed::Always || (need == FieldNeed::Sps && sps); }
 
 }  // namespace seaspring::physics

@@ -141,13 +141,13 @@ SEASPRING_HD inline void spsTauAt(std::uint32_t i, const ParticleView& v, float 
     v.tau[i] = spsTau(v.gradvel[i], v.velrho[i].w, smag, blin);
 }
 
-/// Symplectic predictor of particle i; saves the start-of-step state in pos_pre/velrho_pre.
+/// Symplectic predictor of particle i; saves the start-of-step velocity and density in
+/// velrho_pre.
 SEASPRING_HD inline void symplecticPredictorAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
                                                double dt, const StepConstants& s) {
     const Float4 vr0 = v.velrho[i];
     const Double3 p0 = v.pos[i];
     v.velrho_pre[i] = vr0;
-    v.pos_pre[i] = p0;
     const Float4 a = v.acear[i];
     if (i < nbound) {
         v.velrho[i].w = symplecticPredictBoundRho(vr0.w, a.w, dt, s.rhop0);
@@ -161,7 +161,7 @@ SEASPRING_HD inline void symplecticPredictorAt(std::uint32_t i, std::uint32_t nb
     v.excl[i] = exclusionOf(p, vr, s);
 }
 
-/// Symplectic corrector of particle i (uses pos_pre/velrho_pre).
+/// Symplectic corrector of particle i (from the predictor's state and velrho_pre).
 SEASPRING_HD inline void symplecticCorrectorAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
                                                double dt, const StepConstants& s) {
     const Float4 vr0 = v.velrho_pre[i];
@@ -173,7 +173,7 @@ SEASPRING_HD inline void symplecticCorrectorAt(std::uint32_t i, std::uint32_t nb
     }
     Double3 p;
     Float4 vr;
-    symplecticCorrectFluid(v.pos_pre[i], vr0, rho_half, a, dt, s, p, vr);
+    symplecticCorrectFluid(v.pos[i], vr0, rho_half, a, dt, s, p, vr);
     v.pos[i] = p;
     v.velrho[i] = vr;
     v.excl[i] = exclusionOf(p, vr, s);

@@ -97,7 +97,7 @@ public:
     virtual void init(const BackendSetup& setup) = 0;
     /// Sorts the active particles by cell (moving boundaries too when there are any), drops
     /// the ones flagged excluded to the tail, rebuilds cell ranges and PosCell.
-    /// `keep_step_start`: the symplectic step-start state (pos_pre, velrho_pre) is still to be
+    /// `keep_step_start`: the symplectic step-start state (velrho_pre) is still to be
     /// read (between predictor and corrector); otherwise it is not reordered, as the next
     /// predictor overwrites it. (Verlet's state at n-1 is always kept.)
     /// With a skin (CellGrid::skinf > 0) it only refreshes PosCell while every particle stays

@@ -50,7 +50,7 @@ public:
         const bool sps = s.physics.visco == physics::Viscosity::LaminarSps;
         p_.forEachField([&](auto& buf, unsigned, physics::FieldNeed need) {
             using T = std::remove_pointer_t<decltype(buf.data())>;
-            if (physics::fieldNeeded(need, s.symplectic, sps)) assignFrom(buf, std::vector<T>(np, T{}));
+            if (physics::fieldNeeded(need, sps)) assignFrom(buf, std::vector<T>(np, T{}));
             else buf = Buf<T>();
         });
         std::vector<std::uint32_t> ids(np);
@@ -59,11 +59,7 @@ public:
         assignFrom(p_.pos, s.pos);
         assignFrom(p_.velrho, s.velrho);
         assignFrom(p_.excl, std::vector<std::uint8_t>(np, physics::kActive));
-        if (!p_.pos_pre.empty()) assignFrom(p_.pos_pre, s.pos);
         assignFrom(p_.velrho_pre, s.velrho);
-        keys_alt_.resize(np);
-        perm_alt_.resize(np);
-        scratch_.resize((np * 24 + 15) / 16);  // the largest field type (24 bytes) for every particle
         const std::size_t nc = std::size_t(s.grid.cellCount());
         cs_bound_.resize(nc + 1);
         cs_fluid_.resize(nc + 1);
@@ -202,7 +198,7 @@ public:
         downloadIdOrder(out, physics::kHost | physics::kHashed, 0u);
         if (solid_.n > 0) solid_.download(out);
     }
-    void downloadFields(HostParticles& out) override { downloadIdOrder(out, ~0u, physics::kScratch); }
+    void downloadFields(HostParticles& out) override { downloadIdOrder(out, ~0u, 0u); }
 
 private:
     /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
@@ -244,29 +240,65 @@ private:
         });
     }
 
-    /// Reorders [b, e) of a sorted field by the permutation of the last sort.
+    /// The divide's sort memory, in the force-evaluation fields (physics::kForceEval), which
+    /// nothing reads between a divide and the next force evaluation: keys (8 bytes a
+    /// particle) in press_ovrho, the permutation (4) in visc, the radix sort's second key and
+    /// permutation buffers (8 + 4) and then the gather scratch (16) in acear.
+    struct SortMemory {
+        std::uint64_t* keys;
+        std::uint32_t* perm;
+        std::uint64_t* keys_alt;
+        std::uint32_t* perm_alt;
+        void* scratch;  ///< 16 bytes a particle
+    };
+    SortMemory sortMemory() {
+        static_assert(sizeof(physics::Float2) == sizeof(std::uint64_t) && sizeof(float) == sizeof(std::uint32_t) &&
+                          sizeof(physics::Float4) == 2 * sizeof(std::uint64_t),
+                      "the sort memory layout assumes these sizes");
+        auto* alt = reinterpret_cast<std::uint64_t*>(p_.acear.data());
+        return SortMemory{reinterpret_cast<std::uint64_t*>(p_.press_ovrho.data()),
+                          reinterpret_cast<std::uint32_t*>(p_.visc.data()), alt,
+                          reinterpret_cast<std::uint32_t*>(alt + p_.acear.size()), alt};
+    }
+
+    /// Reorders [b, e) of a sorted field by the permutation of the last sort, through the
+    /// 16-byte scratch (wider fields one word at a time).
     template <typename T>
-    void gather(Buf<T>& arr, std::uint32_t b, std::uint32_t e) {
+    void gather(Buf<T>& arr, std::uint32_t b, std::uint32_t e, const SortMemory& m) {
         if (arr.empty() || e <= b) return;
-        T* tmp = reinterpret_cast<T*>(scratch_.data());
-        exec_.template forEach<LaunchDefault>(b, e, GatherPass<T>{p_.perm.data(), arr.data(), tmp});
-        exec_.copy(arr.data() + b, tmp + b, e - b);
+        if constexpr (sizeof(T) <= sizeof(physics::Float4)) {
+            T* tmp = reinterpret_cast<T*>(m.scratch);
+            exec_.template forEach<LaunchDefault>(b, e, GatherPass<T>{m.perm, arr.data(), tmp});
+            exec_.copy(arr.data() + b, tmp + b, e - b);
+        } else {
+            using W = std::conditional_t<sizeof(T) % sizeof(std::uint64_t) == 0 && alignof(T) >= alignof(std::uint64_t),
+                                         std::uint64_t, std::uint32_t>;
+            static_assert(sizeof(T) % sizeof(W) == 0, "a field is a whole number of words");
+            constexpr std::uint32_t kWords = sizeof(T) / sizeof(W);
+            W* words = reinterpret_cast<W*>(arr.data());
+            W* tmp = reinterpret_cast<W*>(m.scratch);
+            for (std::uint32_t k = 0; k < kWords; ++k) {
+                exec_.template forEach<LaunchDefault>(b, e, GatherWordPass<W>{m.perm, words, kWords, k, tmp});
+                exec_.template forEach<LaunchDefault>(b, e, PutWordPass<W>{tmp, kWords, k, words});
+            }
+        }
     }
 
     /// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort
     /// (kSorted; kSortedPre when `pre`); rebuilds `cs` for the active part. Returns its end.
     std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, Buf<std::uint32_t>& cs, bool pre) {
+        const SortMemory m = sortMemory();
         if (e > b) {
-            exec_.template forEach<LaunchDefault>(b, e, SortKeyPass{p_.view(), setup_.grid});
-            exec_.sortPairs(p_.keys, keys_alt_, p_.perm, perm_alt_, b, e);
+            exec_.template forEach<LaunchDefault>(b, e, SortKeyPass{p_.view(), setup_.grid, m.keys, m.perm});
+            exec_.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
             p_.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
-                if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gather(buf, b, e);
+                if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gather(buf, b, e, m);
             });
         }
-        const std::uint32_t active_end = e > b ? exec_.lowerBound(p_.keys, b, e, physics::kExcludedCell << 32) : b;
+        const std::uint32_t active_end = e > b ? exec_.lowerBound(m.keys, b, e, physics::kExcludedCell << 32) : b;
         exec_.template forEach<LaunchDefault>(0u, std::uint32_t(cs.size()),
-                                              CellStartOuterPass{b, active_end, p_.keys.data(), cs.data()});
-        exec_.template forEach<LaunchDefault>(b, active_end, CellStartFillPass{b, p_.keys.data(), cs.data()});
+                                              CellStartOuterPass{b, active_end, m.keys, cs.data()});
+        exec_.template forEach<LaunchDefault>(b, active_end, CellStartFillPass{b, m.keys, cs.data()});
         return active_end;
     }
 
@@ -322,9 +354,6 @@ private:
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)
     DivideCounts counts_;
     ParticleStore<Exec::template Buffer> p_;
-    Buf<std::uint64_t> keys_alt_;
-    Buf<std::uint32_t> perm_alt_;
-    Buf<physics::Float4> scratch_;  ///< gather scratch, 24 bytes per particle
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> bound_near_, near_tmp_;
     Buf<physics::Double3> moving_pos0_;

@@ -21,9 +21,11 @@ namespace seaspring::solver {
 struct SortKeyPass {
     physics::ParticleView v;
     physics::CellGrid g;
+    std::uint64_t* keys;
+    std::uint32_t* perm;
     SEASPRING_HD void operator()(std::uint32_t i) const {
-        v.keys[i] = physics::sortKeyAt(i, v, g);
-        v.perm[i] = i;
+        keys[i] = physics::sortKeyAt(i, v, g);
+        perm[i] = i;
     }
 };
 
@@ -34,6 +36,26 @@ struct GatherPass {
     const T* src;
     T* dst;
     SEASPRING_HD void operator()(std::uint32_t i) const { dst[i] = src[perm[i]]; }
+};
+
+/// A field of `words` words W per element, gathered one word (k) at a time through a scratch
+/// of one word per particle: dst[i] = word k of element perm[i].
+template <typename W>
+struct GatherWordPass {
+    const std::uint32_t* perm;
+    const W* src;
+    std::uint32_t words, k;
+    W* dst;
+    SEASPRING_HD void operator()(std::uint32_t i) const { dst[i] = src[std::size_t(perm[i]) * words + k]; }
+};
+
+/// Word k of element i = src[i] (puts a GatherWordPass's result back).
+template <typename W>
+struct PutWordPass {
+    const W* src;
+    std::uint32_t words, k;
+    W* dst;
+    SEASPRING_HD void operator()(std::uint32_t i) const { dst[std::size_t(i) * words + k] = src[i]; }
 };
 
 struct CellStartOuterPass {

@@ -40,7 +40,11 @@ bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 /// Every particle field of the two backends, byte for byte; names the first that differs.
-void expectSameFields(Backend& ref, Backend& b, const std::string& phase) {
+/// After a divide the force-evaluation fields hold the sort's scratch (physics::kForceEval):
+/// phases that end with a divide pass kAfterDivide, which leaves them out.
+constexpr unsigned kAfterDivide = physics::kForceEval;
+
+void expectSameFields(Backend& ref, Backend& b, const std::string& phase, unsigned skip = 0) {
     solver::HostParticles x, y;
     ref.downloadFields(x);
     b.downloadFields(y);
@@ -51,7 +55,9 @@ void expectSameFields(Backend& ref, Backend& b, const std::string& phase) {
             ADD_FAILURE() << phase << ": field '" << name << "' differs from the 1-thread OpenMP backend";
         }
     };
-#define SEASPRING_COMPARE_FIELD(name, type, need, flags) compare(#name, x.name, y.name);
+    using namespace ::seaspring::physics;  // the flag names of the field table
+#define SEASPRING_COMPARE_FIELD(name, type, need, flags) \
+    if ((unsigned(flags) & skip) == 0) compare(#name, x.name, y.name);
     SEASPRING_PARTICLE_FIELDS(SEASPRING_COMPARE_FIELD)
 #undef SEASPRING_COMPARE_FIELD
     EXPECT_EQ(differing, 0) << phase;
@@ -143,7 +149,7 @@ void symplecticSteps(Pair<Kind>& p, int steps, const std::string& tag, double dt
         b.applyMotion(p.motions(0.0, dt));
         b.divide(false);
     });
-    expectSameFields(*p.ref, *p.b, tag + " sort");
+    expectSameFields(*p.ref, *p.b, tag + " sort", kAfterDivide);
     for (int s = 0; s < steps; ++s) {
         const std::string at = tag + " step " + std::to_string(s);
         const physics::DtMaxima m0 = p.ref->computeForces(), m1 = p.b->computeForces();
@@ -153,7 +159,7 @@ void symplecticSteps(Pair<Kind>& p, int steps, const std::string& tag, double dt
             b.symplecticPredictor(dt);
             b.divide(true);
         });
-        expectSameFields(*p.ref, *p.b, at + " predictor + sort");
+        expectSameFields(*p.ref, *p.b, at + " predictor + sort", kAfterDivide);
         expectSameMaxima(p.ref->computeForces(), p.b->computeForces(), at + " forces (corrector)");
         p.both([&](Backend& b) { b.symplecticCorrector(dt); });
         expectSameFields(*p.ref, *p.b, at + " corrector");
@@ -162,7 +168,7 @@ void symplecticSteps(Pair<Kind>& p, int steps, const std::string& tag, double dt
             b.applyMotion(p.motions(t, dt));
             b.divide(false);
         });
-        expectSameFields(*p.ref, *p.b, at + " motion + sort");
+        expectSameFields(*p.ref, *p.b, at + " motion + sort", kAfterDivide);
         if (::testing::Test::HasFailure()) return;  // one report per phase is enough
     }
 }
@@ -216,7 +222,7 @@ TYPED_TEST(BackendPhases, VerletStepsCubicLaminar2D) {
             b.applyMotion(p.motions((s + 1) * dt, dt));
             b.divide(false);
         });
-        expectSameFields(*p.ref, *p.b, at + " motion + sort");
+        expectSameFields(*p.ref, *p.b, at + " motion + sort", kAfterDivide);
     }
 }
 
@@ -266,7 +272,7 @@ TYPED_TEST(BackendPhases, SolidSubStepsCouplingAndBoundaryForces) {
             b.solidSteps(s * dt, dt / 13, 13, p.motions(s * dt, dt), true);
             b.divide(false);
         });
-        expectSameFields(*p.ref, *p.b, at + " integration with the solid");
+        expectSameFields(*p.ref, *p.b, at + " integration with the solid", kAfterDivide);
         expectSameSolidsAndForces(*p.ref, *p.b, at + " solid sub-steps and ledger");
     }
 }
