@@ -6,12 +6,60 @@
 #include <cuda_runtime.h>
 
 #include <cstddef>
+#include <cstring>
 #include <utility>
 #include <vector>
 
 #include "cuda/cuda_check.cuh"
 
 namespace seaspring::cuda {
+
+/// Uploads up to this many bytes go through pinned host memory and are queued on the stream
+/// (cudaMemcpy from pageable memory would wait for the device: a host round trip per upload,
+/// e.g. the moving boundaries' poses every step).
+constexpr std::size_t kStagedUploadMax = 64 * 1024;
+
+/// Pinned host staging for small uploads: the data is copied here and its transfer queued
+/// (cudaMemcpyAsync); the next use waits for the previous transfer (an event), so the host
+/// vector may change at once and the staging is never overwritten while it is read.
+class PinnedStaging {
+public:
+    PinnedStaging() = default;
+    ~PinnedStaging() {
+        if (host_) cudaFreeHost(host_);
+        if (done_) cudaEventDestroy(done_);
+    }
+    PinnedStaging(const PinnedStaging&) = delete;
+    PinnedStaging& operator=(const PinnedStaging&) = delete;
+    PinnedStaging(PinnedStaging&& o) noexcept { swap(o); }
+    PinnedStaging& operator=(PinnedStaging&& o) noexcept {
+        swap(o);
+        return *this;
+    }
+    void upload(void* dst, const void* src, std::size_t bytes) {
+        if (done_ == nullptr) SEASPRING_CUDA_CHECK(cudaEventCreateWithFlags(&done_, cudaEventDisableTiming));
+        SEASPRING_CUDA_CHECK(cudaEventSynchronize(done_));  // the previous transfer has read the staging
+        if (bytes > capacity_) {
+            if (host_) SEASPRING_CUDA_CHECK(cudaFreeHost(host_));
+            host_ = nullptr;
+            SEASPRING_CUDA_CHECK(cudaMallocHost(&host_, bytes));
+            capacity_ = bytes;
+        }
+        std::memcpy(host_, src, bytes);
+        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst, host_, bytes, cudaMemcpyHostToDevice));
+        SEASPRING_CUDA_CHECK(cudaEventRecord(done_));
+    }
+
+private:
+    void swap(PinnedStaging& o) noexcept {
+        std::swap(host_, o.host_);
+        std::swap(capacity_, o.capacity_);
+        std::swap(done_, o.done_);
+    }
+    void* host_ = nullptr;
+    std::size_t capacity_ = 0;
+    cudaEvent_t done_ = nullptr;
+};
 
 template <typename T>
 class DeviceBuffer {
@@ -21,10 +69,14 @@ public:
     ~DeviceBuffer() { release(); }
     DeviceBuffer(const DeviceBuffer&) = delete;
     DeviceBuffer& operator=(const DeviceBuffer&) = delete;
-    DeviceBuffer(DeviceBuffer&& o) noexcept : p_(o.p_), n_(o.n_) { o.p_ = nullptr; o.n_ = 0; }
+    DeviceBuffer(DeviceBuffer&& o) noexcept : p_(o.p_), n_(o.n_), staging_(std::move(o.staging_)) {
+        o.p_ = nullptr;
+        o.n_ = 0;
+    }
     DeviceBuffer& operator=(DeviceBuffer&& o) noexcept {
         std::swap(p_, o.p_);
         std::swap(n_, o.n_);
+        std::swap(staging_, o.staging_);
         return *this;
     }
     /// Discards the contents.
@@ -34,9 +86,13 @@ public:
         if (n > 0) SEASPRING_CUDA_CHECK(cudaMalloc(&p_, n * sizeof(T)));
         n_ = n;
     }
+    /// Small uploads are queued (PinnedStaging), larger ones wait for the device.
     void upload(const std::vector<T>& h) {
         resize(h.size());
-        if (!h.empty()) SEASPRING_CUDA_CHECK(cudaMemcpy(p_, h.data(), h.size() * sizeof(T), cudaMemcpyHostToDevice));
+        const std::size_t bytes = h.size() * sizeof(T);
+        if (bytes == 0) return;
+        if (bytes <= kStagedUploadMax) staging_.upload(p_, h.data(), bytes);
+        else SEASPRING_CUDA_CHECK(cudaMemcpy(p_, h.data(), bytes, cudaMemcpyHostToDevice));
     }
     void download(std::vector<T>& h) const {
         h.resize(n_);
@@ -54,6 +110,7 @@ private:
     }
     T* p_ = nullptr;
     std::size_t n_ = 0;
+    PinnedStaging staging_;
 };
 
 /// The container interface of solver::SolidArrays (found by argument-dependent lookup).
