@@ -26,7 +26,25 @@ __global__ void __launch_bounds__(kThreads) forEachKernel(std::uint32_t b, std::
     if (i < e) f(i);
 }
 
+/// Two independent passes in one launch: blocks [0, blocks_a) run fa over [ba, ea), the
+/// others fb over [bb, eb). On small cases each pass alone leaves most of the GPU idle (one
+/// thread per particle, latency-bound): in one launch they run side by side.
+template <int kThreads, class FA, class FB>
+__global__ void __launch_bounds__(kThreads) forEachTwoKernel(std::uint32_t ba, std::uint32_t ea, FA fa,
+                                                             std::uint32_t blocks_a, std::uint32_t bb,
+                                                             std::uint32_t eb, FB fb) {
+    if (blockIdx.x < blocks_a) {
+        const std::uint32_t i = ba + blockIdx.x * blockDim.x + threadIdx.x;
+        if (i < ea) fa(i);
+    } else {
+        const std::uint32_t i = bb + (blockIdx.x - blocks_a) * blockDim.x + threadIdx.x;
+        if (i < eb) fb(i);
+    }
+}
+
 constexpr int kReduceThreads = 256;
+/// Elements per thread below which a reduction takes fewer blocks than its maximum.
+constexpr std::uint32_t kReducePerThread = 8;
 
 /// Reduction, stage 1: each block combines a grid-stride share of [b, e), then its threads in a
 /// fixed tree. Only exact combines are used (see CudaExec::reduce).
@@ -114,19 +132,33 @@ public:
         SEASPRING_CUDA_LAUNCH_CHECK();
     }
 
-    /// Two independent passes: two launches, in this order.
+    /// Two independent passes: one launch (forEachTwoKernel, the second pass's blocks first)
+    /// when both use the same block size and neither is empty, else two.
     template <class LaunchA, class LaunchB, class FA, class FB>
     void forEachIndependent(std::uint32_t ba, std::uint32_t ea, const FA& fa, std::uint32_t bb, std::uint32_t eb,
                             const FB& fb) const {
+        constexpr int kT = LaunchA::kGpuThreads;
+        if constexpr (kT == LaunchB::kGpuThreads) {
+            if (ea > ba && eb > bb) {
+                const std::uint32_t blocks_b = std::uint32_t((std::uint64_t(eb - bb) + kT - 1) / kT);
+                const std::uint32_t blocks_a = std::uint32_t((std::uint64_t(ea - ba) + kT - 1) / kT);
+                forEachTwoKernel<kT, FB, FA><<<blocks_a + blocks_b, kT>>>(bb, eb, fb, blocks_b, ba, ea, fa);
+                SEASPRING_CUDA_LAUNCH_CHECK();
+                return;
+            }
+        }
         forEach<LaunchA>(ba, ea, fa);
         forEach<LaunchB>(bb, eb, fb);
     }
 
-    /// combine(..., f(i)) over [b, e) from `init` in two fixed-shape stages (4 blocks per SM,
-    /// then one); `combine` must be exact, commutative and associative. Synchronises.
+    /// combine(..., f(i)) over [b, e) from `init` in two stages (up to 4 blocks per SM, fewer
+    /// for short ranges, then one); `combine` must be exact, commutative and associative, so the
+    /// shape changes no result. Synchronises.
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
-        const unsigned blocks = unsigned(reduce_blocks_);
+        const std::uint64_t per_block = std::uint64_t(kReduceThreads) * kReducePerThread;
+        const unsigned blocks = unsigned(std::max<std::uint64_t>(
+            1, std::min<std::uint64_t>(reduce_blocks_, (std::uint64_t(e > b ? e - b : 0) + per_block - 1) / per_block)));
         const std::size_t need = sizeof(T) * (blocks + 1);
         if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
         T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
