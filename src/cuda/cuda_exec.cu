@@ -35,6 +35,8 @@ CudaExec::CudaExec(int device) {
     reduce_blocks_ = std::uint32_t(prop.multiProcessorCount) * 4u;
     block_max_ = blockMaxFromEnv();
     lower_bound_.resize(1);
+    reduce_done_.resize(1);
+    SEASPRING_CUDA_CHECK(cudaMemset(reduce_done_.data(), 0, sizeof(unsigned)));
 }
 
 void CudaExec::prepareSort(std::size_t n) {

@@ -46,37 +46,46 @@ constexpr int kReduceThreads = 256;
 /// Elements per thread below which a reduction takes fewer blocks than its maximum.
 constexpr std::uint32_t kReducePerThread = 8;
 
-/// Reduction, stage 1: each block combines a grid-stride share of [b, e), then its threads in a
-/// fixed tree. Only exact combines are used (see CudaExec::reduce).
+/// combine() of a block's values in a fixed tree (every thread calls it; all get the result).
+template <class T, class C>
+__device__ T blockTree(T m, T* sh, const C& combine) {
+    sh[threadIdx.x] = m;
+    __syncthreads();
+    for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
+        if (threadIdx.x < s) sh[threadIdx.x] = combine(sh[threadIdx.x], sh[threadIdx.x + s]);
+        __syncthreads();
+    }
+    return sh[0];
+}
+
+/// Reduction in one launch: each block combines a grid-stride share of [b, e) in a fixed
+/// tree into parts[block]; the last block to finish (an integer ticket, `done`, reset for the
+/// next call) combines the blocks' results into parts[gridDim.x]. Only exact combines are used
+/// (see CudaExec::reduce), so which block comes last changes nothing.
 template <class T, class F, class C>
-__global__ void __launch_bounds__(kReduceThreads) reduceBlocksKernel(std::uint32_t b, std::uint32_t e, T init, F f,
-                                                                    C combine, T* out) {
+__global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, std::uint32_t e, T init, F f,
+                                                              C combine, T* parts, unsigned* done) {
     __shared__ T sh[kReduceThreads];
+    __shared__ bool last;
     T m = init;
     for (std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x; i < e; i += gridDim.x * blockDim.x)
         m = combine(m, f(i));
-    sh[threadIdx.x] = m;
-    __syncthreads();
-    for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
-        if (threadIdx.x < s) sh[threadIdx.x] = combine(sh[threadIdx.x], sh[threadIdx.x + s]);
-        __syncthreads();
+    m = blockTree(m, sh, combine);
+    if (threadIdx.x == 0) {
+        parts[blockIdx.x] = m;
+        __threadfence();  // the part is visible to every block before the ticket is taken
+        last = atomicAdd(done, 1u) == gridDim.x - 1;
     }
-    if (threadIdx.x == 0) out[blockIdx.x] = sh[0];
-}
-/// Reduction, stage 2: one block over the blocks' results.
-template <class T, class C>
-__global__ void __launch_bounds__(kReduceThreads) reduceFinalKernel(std::uint32_t nblocks, const T* in, T init,
-                                                                   C combine, T* out) {
-    __shared__ T sh[kReduceThreads];
-    T m = init;
-    for (std::uint32_t i = threadIdx.x; i < nblocks; i += blockDim.x) m = combine(m, in[i]);
-    sh[threadIdx.x] = m;
     __syncthreads();
-    for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
-        if (threadIdx.x < s) sh[threadIdx.x] = combine(sh[threadIdx.x], sh[threadIdx.x + s]);
-        __syncthreads();
+    if (!last) return;
+    __threadfence();
+    T r = init;
+    for (std::uint32_t k = threadIdx.x; k < gridDim.x; k += blockDim.x) r = combine(r, parts[k]);
+    r = blockTree(r, sh, combine);
+    if (threadIdx.x == 0) {
+        parts[gridDim.x] = r;
+        *done = 0u;
     }
-    if (threadIdx.x == 0) *out = sh[0];
 }
 
 /// First index in [b, e) whose key is >= value (binary search, one thread).
@@ -151,9 +160,9 @@ public:
         forEach<LaunchB>(bb, eb, fb);
     }
 
-    /// combine(..., f(i)) over [b, e) from `init` in two stages (up to 4 blocks per SM, fewer
-    /// for short ranges, then one); `combine` must be exact, commutative and associative, so the
-    /// shape changes no result. Synchronises.
+    /// combine(..., f(i)) over [b, e) from `init` in one launch (reduceKernel: up to 4 blocks
+    /// per SM, fewer for short ranges, the last block combining the blocks' results); `combine`
+    /// must be exact, commutative and associative, so the shape changes no result. Synchronises.
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
         const std::uint64_t per_block = std::uint64_t(kReduceThreads) * kReducePerThread;
@@ -162,9 +171,7 @@ public:
         const std::size_t need = sizeof(T) * (blocks + 1);
         if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
         T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
-        reduceBlocksKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts);
-        SEASPRING_CUDA_LAUNCH_CHECK();
-        reduceFinalKernel<T, C><<<1, kReduceThreads>>>(blocks, parts, init, combine, parts + blocks);
+        reduceKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data());
         SEASPRING_CUDA_LAUNCH_CHECK();
         T r;
         SEASPRING_CUDA_CHECK(cudaMemcpy(&r, parts + blocks, sizeof r, cudaMemcpyDeviceToHost));
@@ -216,6 +223,7 @@ private:
     std::uint32_t reduce_blocks_ = 1;
     std::uint32_t block_max_ = kSequenceBlockMaxDefault;
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
+    DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)
     mutable DeviceBuffer<std::uint32_t> lower_bound_;
 };
 
