@@ -107,14 +107,13 @@ public:
     virtual DivideCounts divideCounts() const = 0;
     /// Places moving boundaries (pose now, velocity over the coming interval).
     virtual void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) = 0;
-    /// One force evaluation; returns the dt maxima.
+    /// One force evaluation; returns the dt maxima. With VCPM solids it also gives the
+    /// hydrodynamic force on every solid particle (Eq. 16), which the solid sub-steps hold
+    /// fixed until the next evaluation.
     virtual physics::DtMaxima computeForces() = 0;
     virtual void symplecticPredictor(double dt) = 0;
     virtual void symplecticCorrector(double dt) = 0;
     virtual void verletStep(double dt, bool euler) = 0;
-    /// VCPM solids: the hydrodynamic force on every solid particle (Eq. 16) from the state of
-    /// the last force evaluation (call it after computeForces, before the integration).
-    virtual void solidHydroForces() = 0;
     /// VCPM solids: `n` sub-steps of `dt` from time t0 with the hydrodynamic force held fixed; `motions`
     /// carries each motion object's pose at the start and the end of the n sub-steps (clamp
     /// nodes on moving boundaries move linearly in between). Then copies the solid positions

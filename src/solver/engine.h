@@ -106,7 +106,12 @@ public:
     }
 
     physics::DtMaxima computeForces() override {
-        const ForceArgs a = forceArgs();
+        ForceArgs a = forceArgs();
+        if (solid_.n > 0) {  // the hydrodynamic force on the solids, in the boundary loop's launch
+            a.hydro_slot = solid_.slot.data();
+            a.nhydro = solid_.n;
+            a.hydro_out = solid_.fluid_force.data();
+        }
         const physics::FluidConstants& c = setup_.fluid;
         exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, c});
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
@@ -130,9 +135,6 @@ public:
                                               VerletPass{nbound_, p_.view(), dt, euler, setup_.step});
     }
 
-    void solidHydroForces() override {
-        if (solid_.n > 0) hydroForces(solid_.slot.data(), solid_.n, solid_.fluid_force.data());
-    }
     void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
                     bool ledger) override {
         if (solid_.n == 0) return;

@@ -25,12 +25,18 @@ struct ForceArgs {
     physics::FluidConstants c;
     physics::CellGrid g;
     std::uint32_t nbound = 0, np = 0;
+    /// With solids: the hydrodynamic force on boundary particles hydro_slot[0, nhydro) (sorted
+    /// indices), written to hydro_out, in the same launch as the pair loops (pairs()).
+    const std::uint32_t* hydro_slot = nullptr;
+    std::uint32_t nhydro = 0;
+    physics::Double3* hydro_out = nullptr;
 };
 
 template <class Exec, class Kernel, int kDim>
 struct ForcePasses {
     /// The pair loops of one force evaluation: boundary particles [0, nbound) and fluid
-    /// particles [nbound, np), after the pressure pass (acear, visc and, with SPS, gradvel).
+    /// particles [nbound, np), after the pressure pass (acear, visc and, with SPS, gradvel),
+    /// and the hydrodynamic force on a.hydro_slot (solids) with the boundary particles.
     static void pairs(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a);
     /// The hydrodynamic force on boundary particles: out[s] for sorted index slot[s], or for
     /// sorted index s when `slot` is null.

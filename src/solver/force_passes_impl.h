@@ -47,6 +47,19 @@ struct HydroForcePass {
     }
 };
 
+/// Index i < nbound: boundary particle i; else the hydrodynamic force of slot i - nbound
+/// (one range, so that both run in the boundary loop's launch).
+template <class BoundPass, class HydroPass>
+struct BoundThenHydroPass {
+    BoundPass bound;
+    HydroPass hydro;
+    std::uint32_t nbound;
+    SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
+        if (i < nbound) bound(i);
+        else hydro(i - nbound);
+    }
+};
+
 /// Calls f(FluidOptions<...>{}) for the run's viscosity and density diffusion.
 template <class Kernel, int kDim, class F>
 void dispatchViscoDdt(const PhysicsChoice& c, F&& f) {
@@ -96,9 +109,19 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     // the CPU the threads that finish their share of the (uneven) boundary loop go on to the fluid.
     using BoundOpt = FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>;
     dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
-        exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(
-            0u, a.nbound, BoundForcesPass<BoundOpt, kCompact>{a}, a.nbound, a.np,
-            FluidForcesPass<decltype(opt), kCompact>{a});
+        using Opt = decltype(opt);
+        const FluidForcesPass<Opt, kCompact> fluid{a};
+        const BoundForcesPass<BoundOpt, kCompact> bound{a};
+        if (a.nhydro == 0) {
+            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, a.nbound, a.np,
+                                                                                 fluid);
+        } else {
+            using HydroOpt = FluidOptions<Kernel, Opt::visco, DensityDiffusion::None, kDim>;
+            const BoundThenHydroPass<BoundForcesPass<BoundOpt, kCompact>, HydroForcePass<HydroOpt>> both{
+                bound, HydroForcePass<HydroOpt>{a, a.hydro_slot, a.hydro_out}, a.nbound};
+            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound + a.nhydro, both,
+                                                                                 a.nbound, a.np, fluid);
+        }
     });
 }
 

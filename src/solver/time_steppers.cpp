@@ -36,7 +36,6 @@ StepResult SymplecticStepper::advance(double time, const StepWindow&) {
     const double dt_predictor = ctx_.forcesDt();
     if (midpoint_) {
         timers.time(PhaseTimers::Solid, [&] {
-            b.solidHydroForces();
             b.solidSave();
             ctx_.advanceSolid(time, 0.5 * dt, false);
         });
@@ -44,7 +43,6 @@ StepResult SymplecticStepper::advance(double time, const StepWindow&) {
     timers.time(PhaseTimers::Integrate, [&] { b.symplecticPredictor(dt); });
     timers.time(PhaseTimers::Divide, [&] { b.divide(true); });
     const double dt_corrector = ctx_.forcesDt();
-    if (ctx_.hasSolids()) timers.time(PhaseTimers::Solid, [&] { b.solidHydroForces(); });
     if (midpoint_) timers.time(PhaseTimers::Solid, [&] { b.solidRestore(); });
     timers.time(PhaseTimers::Integrate, [&] { b.symplecticCorrector(dt); });
     dt_next_ = std::min(dt_predictor, dt_corrector);
@@ -61,7 +59,6 @@ StepResult VerletStepper::advance(double time, const StepWindow&) {
     const double dt = p.dt_fixed > 0 ? p.dt_fixed : dt_forces;
     const bool euler = ++steps_since_euler_ >= p.verlet_steps;
     if (euler) steps_since_euler_ = 0;
-    if (ctx_.hasSolids()) timers.time(PhaseTimers::Solid, [&] { b.solidHydroForces(); });
     timers.time(PhaseTimers::Integrate, [&] { b.verletStep(dt, euler); });
     return endFluidStep(ctx_, time, dt, dt);
 }

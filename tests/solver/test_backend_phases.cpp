@@ -257,7 +257,6 @@ TYPED_TEST(BackendPhases, SolidSubStepsCouplingAndBoundaryForces) {
         const std::string at = "coupled step " + std::to_string(s);
         expectSameMaxima(p.ref->computeForces(), p.b->computeForces(), at + " forces");
         p.both([&](Backend& b) {
-            b.solidHydroForces();
             b.solidSave();
             b.solidSteps(s * dt, 0.5 * dt / 7, 7, p.motions(s * dt, dt), false);  // a sub-cycle to undo
         });
@@ -267,7 +266,6 @@ TYPED_TEST(BackendPhases, SolidSubStepsCouplingAndBoundaryForces) {
             b.symplecticPredictor(dt);
             b.divide(true);
             b.computeForces();
-            b.solidHydroForces();
             b.symplecticCorrector(dt);
             b.solidSteps(s * dt, dt / 13, 13, p.motions(s * dt, dt), true);
             b.divide(false);
