@@ -116,7 +116,7 @@ SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const Intera
     if (Opt::sps) taua = in.tau[i];
     FluidAccum acc;
     fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
-    if (in.bound_near == nullptr || in.bound_near[linearCellOf(g, psa.w)] != 0)
+    if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
         fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
     if (Opt::ddt != DensityDiffusion::None && !acc.ddt_off) acc.ar += acc.delta;
     return acc;
@@ -152,6 +152,9 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
     float ar = 0.f, visc = 0.f;
+    ar_out = 0.f;
+    visc_out = 0.f;
+    if (in.near != nullptr && (in.near[linearCellOf(g, psa.w)] & kNearFluid) == 0) return;  // a dry wall
     forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, [&](std::uint32_t pb, std::uint32_t pe,
                                                                      const Float4& par, int cax) {
         if constexpr (!kCompact) {

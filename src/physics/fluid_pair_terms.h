@@ -27,9 +27,9 @@ struct InteractionInputs {
     const std::uint32_t* cell_start_fluid = nullptr;  ///< ncells+1 first indices per cell
     const SymTensor* tau = nullptr;                   ///< SPS stress/rho, per particle (SPS only)
     const Float2* press_ovrho = nullptr;              ///< (Tait pressure, 1/rho) per particle
-    /// Per cell: a boundary particle in its search box (cellOccupiedAt, dilateCellsAt);
-    /// null: visit always.
-    const std::uint8_t* bound_near = nullptr;
+    /// Per cell: kNearBound / kNearFluid, a boundary / fluid particle in its search box
+    /// (cellOccupiedAt, dilateCellsAt); null: visit always.
+    const std::uint8_t* near = nullptr;
 };
 
 /// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.

@@ -53,19 +53,25 @@ SEASPRING_HD inline void cellStartOuterAt(std::uint32_t c, std::uint32_t b, std:
     else if (c > std::uint32_t(keys[e - 1] >> 32)) cell_start[c] = e;
 }
 
-/// "Near" flags of the boundary block, per cell: near[c] = 1 when the block has a particle in a
-/// cell within g.range cells of c along every axis (the search box of any point of c), else 0.
-/// A fluid particle skips the boundary block where its cell's flag is 0: the block holds no
-/// candidate there, so the flags change no result. Built from the cell ranges in three passes
-/// (cellOccupiedAt, then dilateCellsAt along x, y and z), when the boundary block is sorted
-/// (once, unless boundaries move). Integer only. (The same flags of the fluid block, rebuilt
-/// at every divide, would let dry walls skip their loop, but cost more than they save.)
-SEASPRING_HD inline void cellOccupiedAt(std::uint32_t c, const std::uint32_t* cell_start, std::uint8_t* occ) {
-    occ[c] = cell_start[c] != cell_start[c + 1] ? 1 : 0;
+/// "Near" flags per cell, one bit per block: bit kNearBound (kNearFluid) of near[c] is set
+/// when the boundary (fluid) block has a particle in a cell within g.range cells of c along
+/// every axis (the search box of any point of c). A fluid particle skips the boundary block,
+/// and a boundary particle (DBC continuity, hydrodynamic force on a solid) skips the fluid
+/// block, where its cell's bit is clear: the block holds no candidate there, so the flags
+/// change no result. Built from the block's cell ranges in three passes (cellOccupiedAt, then
+/// dilateCellsAt along x, y and z), leaving the other block's bit as it is, whenever the
+/// block is sorted (the boundary block once unless boundaries move; the fluid block at every
+/// sort, which the skin makes rare). Integer only.
+constexpr std::uint8_t kNearBound = 1u, kNearFluid = 2u;
+SEASPRING_HD inline void cellOccupiedAt(std::uint32_t c, const std::uint32_t* cell_start, std::uint8_t bit,
+                                        std::uint8_t* near) {
+    const std::uint8_t others = std::uint8_t(near[c] & std::uint8_t(~bit));
+    near[c] = std::uint8_t(others | (cell_start[c] != cell_start[c + 1] ? bit : 0u));
 }
-/// out[c] = OR of in[] over the cells within g.range of c along `axis` (0 x, 1 y, 2 z).
-SEASPRING_HD inline void dilateCellsAt(std::uint32_t c, int axis, const CellGrid& g, const std::uint8_t* in,
-                                       std::uint8_t* out) {
+/// Bit `bit` of out[c] = OR of that bit of in[] over the cells within g.range of c along
+/// `axis` (0 x, 1 y, 2 z); the other bits of in[c] are copied.
+SEASPRING_HD inline void dilateCellsAt(std::uint32_t c, int axis, const CellGrid& g, std::uint8_t bit,
+                                       const std::uint8_t* in, std::uint8_t* out) {
     const std::uint32_t nx = std::uint32_t(g.ncx), nxy = nx * std::uint32_t(g.ncy);
     const std::uint32_t stride = axis == 0 ? 1u : (axis == 1 ? nx : nxy);
     const int n = axis == 0 ? g.ncx : (axis == 1 ? g.ncy : g.ncz);
@@ -73,7 +79,7 @@ SEASPRING_HD inline void dilateCellsAt(std::uint32_t c, int axis, const CellGrid
     const std::uint32_t base = c - std::uint32_t(k) * stride;
     std::uint8_t any = 0;
     for (int m = maxi(k - g.range, 0); m <= mini(k + g.range, n - 1); ++m) any |= in[base + std::uint32_t(m) * stride];
-    out[c] = any;
+    out[c] = std::uint8_t((in[c] & std::uint8_t(~bit)) | (any & bit));
 }
 
 /// PosCell of particle i.

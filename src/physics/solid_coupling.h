@@ -27,6 +27,9 @@ SEASPRING_HD inline Double3 hydroForceOnBoundary(std::uint32_t i, const Interact
     const int cby = Opt::dim == 3 ? packedCellY(g, psb.w) : 0;
     const int cbz = packedCellZ(g, psb.w);
     double fx = 0.0, fy = 0.0, fz = 0.0;
+    const double m = double(c.massfluid);
+    if (in.near != nullptr && (in.near[linearCellOf(g, psb.w)] & kNearFluid) == 0)  // no fluid in reach
+        return Double3{m * fx, m * fy, m * fz};
     forEachCandidateRow<Opt::dim>(psb, in.cell_start_fluid, c, g, [&](std::uint32_t pb, std::uint32_t pe,
                                                                       const Float4&, int) {
         for (std::uint32_t j = pb; j < pe; ++j) {
@@ -50,7 +53,6 @@ SEASPRING_HD inline Double3 hydroForceOnBoundary(std::uint32_t i, const Interact
             fz -= double(az);
         }
     });
-    const double m = double(c.massfluid);
     return Double3{m * fx, m * fy, m * fz};
 }
 

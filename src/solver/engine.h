@@ -63,7 +63,7 @@ public:
         const std::size_t nc = std::size_t(s.grid.cellCount());
         cs_bound_.resize(nc + 1);
         cs_fluid_.resize(nc + 1);
-        bound_near_.resize(nc);
+        assignFrom(near_, std::vector<std::uint8_t>(nc, 0));
         near_tmp_.resize(nc);
         assignFrom(moving_pos0_, s.moving_pos0);
         assignFrom(moving_object_, s.moving_object);
@@ -71,7 +71,7 @@ public:
         exec_.prepareSort(np);
         if (!s.solid.empty()) solid_.init(s.solid);
         sortRange(0, nbound_, cs_bound_, true);
-        boundNear();
+        nearFlags(cs_bound_, physics::kNearBound);
         updateSolidSlots();
     }
 
@@ -90,10 +90,11 @@ public:
         // find the solid particles again. Fixed walls stay as init sorted them.
         if (setup_.nmoving > 0 || solid_.n > 0) {
             sortRange(0, nbound_, cs_bound_, pre);
-            boundNear();
+            nearFlags(cs_bound_, physics::kNearBound);
             updateSolidSlots();
         }
         nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
+        nearFlags(cs_fluid_, physics::kNearFluid);
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
     }
 
@@ -226,7 +227,7 @@ private:
         a.in.cell_start_fluid = cs_fluid_.data();
         a.in.tau = a.v.tau;  // null without SPS
         a.in.press_ovrho = a.v.press_ovrho;
-        a.in.bound_near = bound_near_.data();
+        a.in.near = near_.data();
         a.c = setup_.fluid;
         a.g = setup_.grid;
         a.nbound = nbound_;
@@ -304,15 +305,16 @@ private:
         return active_end;
     }
 
-    /// The boundary block's "near" flags (physics::cellOccupiedAt, then dilateCellsAt along x, y, z).
-    void boundNear() {
+    /// Bit `bit` of the per-cell near flags from the cell ranges `cs` of its block
+    /// (physics::cellOccupiedAt, then dilateCellsAt along x, y, z; the other bit is kept).
+    void nearFlags(const Buf<std::uint32_t>& cs, std::uint8_t bit) {
         const std::uint32_t nc = setup_.grid.cellCount();
         const physics::CellGrid& g = setup_.grid;
-        std::uint8_t *a = bound_near_.data(), *t = near_tmp_.data();
-        exec_.template forEach<LaunchDefault>(0u, nc, CellOccupiedPass{cs_bound_.data(), a});
-        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{0, g, a, t});
-        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{1, g, t, a});
-        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{2, g, a, t});
+        std::uint8_t *a = near_.data(), *t = near_tmp_.data();
+        exec_.template forEach<LaunchDefault>(0u, nc, CellOccupiedPass{cs.data(), bit, a});
+        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{0, g, bit, a, t});
+        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{1, g, bit, t, a});
+        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{2, g, bit, a, t});
         exec_.copy(a, t, nc);
     }
 
@@ -357,7 +359,7 @@ private:
     DivideCounts counts_;
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
-    Buf<std::uint8_t> bound_near_, near_tmp_;
+    Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
     Buf<physics::Double3> moving_pos0_;
     Buf<std::uint16_t> moving_object_;
     Buf<physics::RigidMotionGpu> motions_, solid_motions_;

@@ -74,16 +74,18 @@ struct CellStartFillPass {
 
 struct CellOccupiedPass {
     const std::uint32_t* cell_start;
-    std::uint8_t* occ;
-    SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellOccupiedAt(c, cell_start, occ); }
+    std::uint8_t bit;
+    std::uint8_t* near;
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellOccupiedAt(c, cell_start, bit, near); }
 };
 
 struct DilateCellsPass {
     int axis;
     physics::CellGrid g;
+    std::uint8_t bit;
     const std::uint8_t* in;
     std::uint8_t* out;
-    SEASPRING_HD void operator()(std::uint32_t c) const { physics::dilateCellsAt(c, axis, g, in, out); }
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::dilateCellsAt(c, axis, g, bit, in, out); }
 };
 
 struct PosCellPass {

@@ -1,8 +1,9 @@
 // SeaSpring — MIT licence.
 /// \file test_cell_search.cpp
-/// \brief The boundary block's per-cell "near" flags (cellOccupiedAt + dilateCellsAt along x,
-///        y, z) against a brute-force scan of each cell's search box, for every cell mode in
-///        2D and 3D: a fluid particle may skip the boundary block only where it holds nothing.
+/// \brief The per-cell "near" flags (cellOccupiedAt + dilateCellsAt along x, y, z, one bit per
+///        block) against a brute-force scan of each cell's search box, for every cell mode in
+///        2D and 3D, with and without a skin: a particle may skip a block only where it holds
+///        nothing; building one block's bit keeps the other's.
 ///        The candidate rows of forEachCandidateRow against a brute-force pair scan: every
 ///        neighbour is among them, visited in sorted order.
 #include <gtest/gtest.h>
@@ -23,14 +24,15 @@ using namespace seaspring::physics;
 TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
     std::mt19937 rng(7);
     for (int dim : {2, 3}) {
-        for (int div : {1, 2, 3, 4}) {
+        for (int div : {1, 2, 3, 4})
+          for (double skin : {0.0, 0.05}) {
             CellGrid g;
-            ASSERT_TRUE(makeCellGrid(0, 0, 0, 1.0, dim == 3 ? 0.6 : 0.0, 0.5, 0.05, div, g));
+            ASSERT_TRUE(makeCellGrid(0, 0, 0, 1.0, dim == 3 ? 0.6 : 0.0, 0.5, 0.05, div, g, skin));
             const std::uint32_t nc = g.cellCount();
             // Sparse occupancy (about one occupied cell per search box; occupied cells hold 1-3
             // particles), as a block's cell ranges: near and far cells both occur.
             std::uint32_t box = 1;
-            for (int k = 0; k < dim; ++k) box *= std::uint32_t(2 * div + 1);
+            for (int k = 0; k < dim; ++k) box *= std::uint32_t(2 * g.range + 1);
             std::vector<std::uint32_t> cs(nc + 1, 0);
             std::vector<std::uint8_t> occupied(nc, 0);
             std::uint32_t n = 0;
@@ -42,11 +44,14 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
                 }
             }
             cs[nc] = n;
-            std::vector<std::uint8_t> a(nc), t(nc);
-            for (std::uint32_t c = 0; c < nc; ++c) cellOccupiedAt(c, cs.data(), a.data());
-            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 0, g, a.data(), t.data());
-            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 1, g, t.data(), a.data());
-            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 2, g, a.data(), t.data());
+            // The other block's bit (kNearBound), random, must come through untouched.
+            std::vector<std::uint8_t> a(nc), t(nc), other(nc);
+            for (std::uint32_t c = 0; c < nc; ++c) a[c] = other[c] = std::uint8_t(rng() % 2 ? kNearBound : 0);
+            const std::uint8_t bit = kNearFluid;
+            for (std::uint32_t c = 0; c < nc; ++c) cellOccupiedAt(c, cs.data(), bit, a.data());
+            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 0, g, bit, a.data(), t.data());
+            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 1, g, bit, t.data(), a.data());
+            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 2, g, bit, a.data(), t.data());
             int near = 0, far = 0, wrong = 0;
             for (int cz = 0; cz < g.ncz; ++cz)
                 for (int cy = 0; cy < g.ncy; ++cy)
@@ -57,14 +62,16 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
                                 for (int x = cx - g.range; x <= cx + g.range; ++x)
                                     if (x >= 0 && y >= 0 && z >= 0 && x < g.ncx && y < g.ncy && z < g.ncz)
                                         any |= occupied[g.linear(x, y, z)];
-                        const std::uint8_t flag = t[g.linear(cx, cy, cz)];
+                        const std::uint32_t c = g.linear(cx, cy, cz);
+                        const std::uint8_t flag = (t[c] & bit) ? 1 : 0;
                         wrong += flag != any ? 1 : 0;
+                        wrong += (t[c] & kNearBound) != other[c] ? 1 : 0;
                         (any ? near : far) += 1;
                     }
             EXPECT_EQ(wrong, 0) << dim << "D, cells of 2h/" << div;
             EXPECT_GT(near, 0) << dim << "D, cells of 2h/" << div;  // both kinds occur: the check can fail
             EXPECT_GT(far, 0) << dim << "D, cells of 2h/" << div;
-        }
+          }
     }
 }
 
