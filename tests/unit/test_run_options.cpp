@@ -95,6 +95,9 @@ TEST(RunOptions, RunControl) {
     EXPECT_EQ(parseWith({"-cellmode:third"}).cell_div, 3);
     EXPECT_EQ(parseWith({"-cellmode:quarter"}).cell_div, 4);
     EXPECT_EQ(parseWith({"-cellmode:auto"}).cell_div, 0);
+    EXPECT_FALSE(parseWith({}).skin.has_value());
+    EXPECT_EQ(*parseWith({"-skin:0"}).skin, 0.0);
+    EXPECT_EQ(*parseWith({"-skin:0.25"}).skin, 0.25);
     EXPECT_EQ(parseWith({"-progress:0"}).progress_interval, 0.0);
     EXPECT_EQ(parseWith({"-progress:2.5"}).progress_interval, 2.5);
     EXPECT_TRUE(parseWith({"-quiet"}).quiet);
@@ -201,6 +204,8 @@ TEST(RunOptions, UnknownAndMalformedOptions) {
     expectError({"-:3"}, "unknown option -:3");
     expectError({"-mdbc"}, "unknown option -mdbc");
     expectError({"-cpu:1"}, "-cpu:1: -cpu takes no value");
+    expectError({"-skin:0.7"}, "-skin:0.7: 0.7 is larger than 0.5 (the skin is a fraction of the cell size)");
+    expectError({"-skin:-1"}, "-skin:-1: -1 must be >= 0");
     expectError({"-symplectic:1"}, "-symplectic:1: -symplectic takes no value");
     expectError({"-quiet:yes"}, "-quiet:yes: -quiet takes no value");
     expectError({"-cfl"}, "-cfl: needs a value (-cfl:VALUE)");
