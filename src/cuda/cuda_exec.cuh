@@ -58,6 +58,18 @@ __device__ T blockTree(T m, T* sh, const C& combine) {
     return sh[0];
 }
 
+/// *p read past the L1 cache (ld.global.cg, word by word): what another block wrote before a
+/// __threadfence is seen (the CUDA guide's last-block pattern reads through volatile).
+template <class T>
+__device__ T loadCoherent(const T* p) {
+    static_assert(sizeof(T) % sizeof(unsigned) == 0, "a reduction value is a whole number of 32-bit words");
+    T r;
+    unsigned* dst = reinterpret_cast<unsigned*>(&r);
+    const unsigned* src = reinterpret_cast<const unsigned*>(p);
+    for (unsigned w = 0; w < sizeof(T) / sizeof(unsigned); ++w) dst[w] = __ldcg(src + w);
+    return r;
+}
+
 /// Reduction in one launch: each block combines a grid-stride share of [b, e) in a fixed
 /// tree into parts[block]; the last block to finish (an integer ticket, `done`, reset for the
 /// next call) combines the blocks' results into parts[gridDim.x]. Only exact combines are used
@@ -80,7 +92,7 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     if (!last) return;
     __threadfence();
     T r = init;
-    for (std::uint32_t k = threadIdx.x; k < gridDim.x; k += blockDim.x) r = combine(r, parts[k]);
+    for (std::uint32_t k = threadIdx.x; k < gridDim.x; k += blockDim.x) r = combine(r, loadCoherent(parts + k));
     r = blockTree(r, sh, combine);
     if (threadIdx.x == 0) {
         parts[gridDim.x] = r;
