@@ -14,6 +14,12 @@ const char* particleTypeName(ParticleType t) {
     return "unknown";
 }
 
+std::size_t ParticleSet::boundaryCount() const {
+    std::size_t n = 0;
+    for (ParticleType t : type) n += (t != ParticleType::Fluid) ? 1 : 0;
+    return n;
+}
+
 void ParticleSet::reserve(std::size_t n) {
     id.reserve(n); type.reserve(n); mk.reserve(n); pos.reserve(n);
     vel.reserve(n); rhop.reserve(n); mass.reserve(n);

@@ -34,7 +34,17 @@ struct ParticleSet {
     std::vector<float> rhop;        ///< density [kg/m^3]
     std::vector<float> mass;        ///< mass [kg]
 
+    /// mDBC ghost vector of each boundary particle [m]: the vector from the particle to
+    /// its ghost node, i.e. 2 x (nearest point of the boundary interface - position).
+    /// Either empty (the case has no normals) or exactly one entry per non-fluid
+    /// particle (ids 0..nbound-1, which come first); zero where a particle has no
+    /// interface within reach. Not touched by reserve()/resize(): those size the
+    /// per-particle arrays only; whoever fills `normal` sizes it to the boundary count.
+    std::vector<Vec3f> normal;
+
     std::size_t size() const { return id.size(); }
+    /// Number of non-fluid particles (fixed, moving, solid), counted from `type`.
+    std::size_t boundaryCount() const;
     void reserve(std::size_t n);
     void resize(std::size_t n);
 };

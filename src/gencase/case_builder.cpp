@@ -51,6 +51,7 @@ const GeneratedCase& CaseBuilder::build() {
     if (pugi::xml_node m = casedef.child("motion")) out_.motion = parseMotion(*src_, m, ev_);
     readExecution(root.child("execution"));
     finishParticles();
+    computeNormals(casedef.child("normals"));
     readGauges(root.child("execution"));
     resolveParameters(root.child("execution").child("parameters"));
     printSummary();
@@ -68,9 +69,6 @@ void CaseBuilder::readHeader(pugi::xml_node casedef) {
     }
     src_->checkChildren(casedef, {"constantsdef", "mkconfig", "geometry", "motion", "normals"});
     src_->checkUnique(casedef, {"constantsdef", "mkconfig", "geometry", "motion", "normals"});
-    if (pugi::xml_node nm = casedef.child("normals"))
-        if (src_->boolean(nm, "active", true))
-            src_->fail(nm, "active=\"true\": mDBC normals are not supported yet; set active=\"false\"");
     if (pugi::xml_node mk = casedef.child("mkconfig")) {
         src_->checkAttributes(mk, {"boundcount", "fluidcount"});
         src_->checkChildren(mk, {});
@@ -124,6 +122,18 @@ void CaseBuilder::drawGeometry(pugi::xml_node geometry) {
          << grid_.ny() << " x " << grid_.nz() << " sites\n";
     CommandRunner runner(*src_, ev_, grid_, out_.mkconfig, log_, opt_.verbose);
     runner.run(src_->child(geometry, "commands"));
+    out_.shapes = runner.shapeSets();
+}
+
+void CaseBuilder::computeNormals(pugi::xml_node normals) {
+    const NormalsRequest req = readNormals(*src_, normals, ev_, out_.shapes, out_.name);
+    if (!req.active) return;
+    ParticleSet& p = out_.particles;
+    const CaseConstants& c = out_.constants;
+    p.normal = computeGhostVectors(p.pos, p.boundaryCount(), req.shapes->faces, req.distanceh * c.h, c.dp,
+                                   grid_.twoD(), src_->path(), &out_.normals_stats);
+    out_.normals_set = req.shapes->name;
+    printNormalsSummary(log_, out_.normals_set, out_.normals_stats, c.dp);
 }
 
 void CaseBuilder::readExecution(pugi::xml_node execution) {

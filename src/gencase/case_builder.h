@@ -15,6 +15,7 @@
 #include "case/parameters.h"
 #include "case/xml_source.h"
 #include "core/particle_set.h"
+#include "gencase/boundary_normals.h"
 #include "gencase/command_runner.h"
 #include "gencase/constants.h"
 #include "gencase/motion.h"
@@ -45,7 +46,10 @@ struct GeneratedCase {
     std::string name;
     MkConfig mkconfig;
     CaseConstants constants;
-    ParticleSet particles;
+    ParticleSet particles;           ///< with the mDBC ghost vectors (`normal`) when <normals> is active
+    std::vector<ShapeSet> shapes;    ///< shape sets named by <shapeout> (written as VTK files)
+    std::string normals_set;         ///< shape set the normals come from ("" when none)
+    GhostVectorStats normals_stats;
     std::vector<MkBlock> blocks;     ///< in id order
     std::vector<SolidBody> solids;   ///< `particles` filled once the bonds are built
     GaugeSet gauges;  ///< <special><gauges> (lengths resolved)
@@ -80,6 +84,8 @@ private:
     MkTypes classifyMks() const;
     void checkMkUsage() const;
     void finishParticles();
+    /// <normals>: the mDBC ghost vectors of the boundary particles (after finishParticles).
+    void computeNormals(pugi::xml_node normals);
     void resolveParameters(pugi::xml_node parameters);
     void printSummary() const;
 

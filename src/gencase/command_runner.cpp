@@ -81,6 +81,9 @@ void CommandRunner::run(pugi::xml_node commands) {
     for (pugi::xml_node l : commands.children("list")) src_.checkAttributes(l, {"name", "printcall"});
     pugi::xml_node main = src_.child(commands, "mainlist");
     runList(main, 0);
+    if (!pending_faces_.empty())
+        log_ << "Note: " << src_.path() << ":" << pending_first_line_ << ": " << pending_faces_.size()
+             << " shape faces recorded from this line on are in no shape set (no <shapeout> follows them)\n";
 }
 
 void CommandRunner::runList(pugi::xml_node list, int depth) {
@@ -112,13 +115,19 @@ void CommandRunner::report(pugi::xml_node cmd, std::size_t count) {
              << mk_ << "\n";
 }
 
-std::vector<double> CommandRunner::layers(pugi::xml_node cmd) const {
+std::vector<double> CommandRunner::layers(pugi::xml_node cmd, std::vector<bool>* marked) const {
     pugi::xml_node l = cmd.child("layers");
-    if (!l) return {0.0};
+    if (marked) marked->clear();
+    if (!l) {
+        if (marked) marked->push_back(false);
+        return {0.0};
+    }
     src_.checkAttributes(l, {"vdp"});
     std::vector<double> out;
     for (std::string item : split(src_.text(l, "vdp"), ',')) {
-        if (!item.empty() && item.back() == '*') item.pop_back();  // GenCase shape-output marker
+        const bool star = !item.empty() && item.back() == '*';  // GenCase shape-output marker
+        if (star) item.pop_back();
+        if (marked) marked->push_back(star);
         try {
             out.push_back(parseNumber(item));
         } catch (const ExpressionError& e) {
@@ -158,8 +167,14 @@ void CommandRunner::drawBoxCommand(pugi::xml_node cmd) {
     const Vec3d p1 = p0 + size;
     const Vec3d lo0{std::min(p0.x, p1.x), std::min(p0.y, p1.y), std::min(p0.z, p1.z)};
     const Vec3d hi0{std::max(p0.x, p1.x), std::max(p0.y, p1.y), std::max(p0.z, p1.z)};
-    std::size_t n = 0;
-    for (double v : layers(cmd)) {
+    const bool shapes = recordsShapes(cmd);
+    std::vector<bool> marked;
+    const std::vector<double> offsets = layers(cmd, &marked);
+    // With a '*' on some layers only those are shapes (GenCase's "0*,1,2"), else all are.
+    const bool any_marked = std::find(marked.begin(), marked.end(), true) != marked.end();
+    std::size_t n = 0, nfaces = 0;
+    for (std::size_t k = 0; k < offsets.size(); ++k) {
+        const double v = offsets[k];
         // Layer v moves each drawn face outwards by v*dp (inwards when negative); the sides
         // that are not drawn stay put, so the layers of adjacent faces close the corners and
         // an open side stays flush (GenCase: SPHERIC tank counts match exactly).
@@ -177,8 +192,81 @@ void CommandRunner::drawBoxCommand(pugi::xml_node cmd) {
             if (faces & FaceTop) hi.z += d;
         }
         if (draw_points_) n += drawBox(grid_, matrix_, lo, hi - lo, faces, mk_);
+        if (shapes && (!any_marked || marked[k])) nfaces += recordBoxShape(cmd, lo, hi, faces, v);
     }
     report(cmd, n);
+    if (shapes && verbose_)
+        log_ << "  " << src_.where(cmd) << " <drawbox> " << nfaces << " shape faces"
+             << (normal_invert_ ? " (normals inverted)" : "") << "\n";
+}
+
+std::size_t CommandRunner::recordBoxShape(pugi::xml_node cmd, Vec3d lo, Vec3d hi, unsigned faces, double vdp) {
+    const char* axis = hi.x < lo.x ? "x" : hi.z < lo.z ? "z" : (!grid_.twoD() && hi.y < lo.y) ? "y" : nullptr;
+    if (axis)
+        src_.fail(cmd.child("layers") ? cmd.child("layers") : cmd,
+                  "the layer vdp=" + std::to_string(vdp) + " turns the box's shape inside out along " + axis);
+    if (grid_.twoD() && hi.y < lo.y) std::swap(lo.y, hi.y);  // y plays no part in 2D
+    const std::vector<ShapeFace> f = boxShapeFaces(matrix_, lo, hi, faces, normal_invert_, src_.lineOf(cmd));
+    if (pending_faces_.empty()) pending_first_line_ = src_.lineOf(cmd);
+    pending_faces_.insert(pending_faces_.end(), f.begin(), f.end());
+    return f.size();
+}
+
+bool CommandRunner::recordsShapes(pugi::xml_node cmd) const {
+    if (!draw_shapes_) return false;
+    const unsigned kind = mk_ == 0 ? 4u : mkcfg_.isFluid(mk_) ? 2u : 1u;
+    if ((shape_kinds_ & kind) == 0) return false;
+    if (!shape_actual_)
+        src_.fail(cmd, "draws shapes (<setactive drawshapes=\"1\"/>) but <setshapemode> selects dp shapes only; "
+                       "SeaSpring records the actual geometry: add 'actual'");
+    return true;
+}
+
+void CommandRunner::setShapeMode(pugi::xml_node cmd) {
+    src_.checkAttributes(cmd, {});
+    bool actual = false, dp = false;
+    unsigned kinds = 0;
+    bool any_kind = false;
+    for (const std::string& w : split(cmd.text().get(), '|')) {
+        if (w == "actual") actual = true;
+        else if (w == "dp") dp = true;
+        else if (w == "bound") kinds |= 1u;
+        else if (w == "fluid") kinds |= 2u;
+        else if (w == "void") kinds |= 4u;
+        else if (w == "all") kinds |= 7u;
+        else if (w != "null")
+            src_.fail(cmd, "\"" + w + "\": expected actual, dp, all, bound, fluid, void or null");
+        any_kind = any_kind || (w != "actual" && w != "dp");
+    }
+    shape_actual_ = actual || !dp;  // no geometry word: actual
+    shape_kinds_ = any_kind ? kinds : 7u;
+}
+
+void CommandRunner::shapeOut(pugi::xml_node cmd) {
+    src_.checkAttributes(cmd, {"file", "format", "reset", "savenormal"});
+    const std::string name = src_.text(cmd, "file", "");
+    if (name.find_first_of("/\\") != std::string::npos)
+        src_.fail(cmd, "file=\"" + name + "\": a shape set name must not contain '/' or '\\'");
+    const std::string format = src_.text(cmd, "format", "vtk");
+    if (format != "vtk" && format != "VTK")
+        src_.fail(cmd, "format=\"" + format + "\": SeaSpring writes shape files as VTK only");
+    src_.boolean(cmd, "savenormal", true);  // the normals are always written
+    const bool reset = src_.boolean(cmd, "reset", true);
+    ShapeSet set{name, src_.lineOf(cmd), pending_faces_};
+    if (reset) pending_faces_.clear();
+    if (verbose_)
+        log_ << "  " << src_.where(cmd) << " <shapeout> shape set '" << name << "': " << set.faces.size()
+             << " faces" << (set.faces.empty() ? " (shapes are recorded only while <setactive drawshapes=\"1\"/>)" : "")
+             << "\n";
+    for (ShapeSet& s : shape_sets_)
+        if (s.name == name) {
+            if (!s.faces.empty())
+                log_ << "Note: " << src_.where(cmd) << ": <shapeout> replaces shape set '" << name
+                     << "' written at line " << s.line << "\n";
+            s = std::move(set);
+            return;
+        }
+    shape_sets_.push_back(std::move(set));
 }
 
 void CommandRunner::drawRoundCommand(pugi::xml_node cmd, bool cylinder) {
@@ -197,6 +285,10 @@ void CommandRunner::drawRoundCommand(pugi::xml_node cmd, bool cylinder) {
                            std::to_string(pts.size()));
     if (cylinder && dot(pts[1] - pts[0], pts[1] - pts[0]) == 0)
         src_.fail(cmd, "the two axis points are equal");
+    if (recordsShapes(cmd))
+        src_.fail(cmd, "normals geometry supports drawbox only: <" + std::string(cmd.name()) +
+                           "> cannot be drawn while shapes are recorded (<setactive drawshapes=\"1\"/>); "
+                           "switch drawshapes off around it");
     std::size_t n = 0;
     for (double v : layers(cmd)) {
         const double r = radius + v * grid_.dp();
@@ -256,29 +348,23 @@ void CommandRunner::runCommand(pugi::xml_node cmd, int depth) {
         src_.checkAttributes(cmd, {"mode"});
         mode_ = parseDrawMode(src_, cmd);
     } else if (name == "setshapemode") {
-        src_.checkAttributes(cmd, {});
-        for (const std::string& w : split(cmd.text().get(), '|'))
-            if (w != "actual" && w != "dp" && w != "all" && w != "bound" && w != "fluid" &&
-                w != "void" && w != "null")
-                src_.fail(cmd, "\"" + w + "\": expected actual, dp, all, bound, fluid, void or null");
+        setShapeMode(cmd);
     } else if (name == "setactive") {
         src_.checkAttributes(cmd, {"drawpoints", "drawshapes", "vtkout"});
         draw_points_ = src_.boolean(cmd, "drawpoints", draw_points_);
+        draw_shapes_ = src_.boolean(cmd, "drawshapes", draw_shapes_);
     } else if (name == "setnormalinvert") {
         src_.checkAttributes(cmd, {"invert"});
-        src_.boolean(cmd, "invert", false);  // normals are for mDBC shape output only
+        if (!cmd.attribute("invert")) src_.fail(cmd, "needs invert=\"true\" or invert=\"false\"");
+        normal_invert_ = src_.boolean(cmd, "invert", false);
     } else if (name == "resetdraw") {
         src_.checkAttributes(cmd, {});
         mode_ = DrawMode::Full;
         matrix_ = Affine{};
         draw_points_ = true;
+        draw_shapes_ = false;
     } else if (name == "shapeout") {
-        src_.checkAttributes(cmd, {"file", "format", "reset", "savenormal"});
-        if (!shapeout_noted_ && verbose_)
-            log_ << "Note: " << src_.where(cmd)
-                 << ": <shapeout> accepted; SeaSpring writes no shape files (use -save:vtk for a "
-                    "particle preview)\n";
-        shapeout_noted_ = true;
+        shapeOut(cmd);
     } else if (name == "move") {
         src_.checkAttributes(cmd, {"x", "y", "z"});
         matrix_ = matrix_.then(Affine::translation(src_.vec3(cmd, ev_)));

@@ -5,7 +5,9 @@
 /// GenCase is a small state machine: the current MK (`setmkfluid`, `setmkbound`,
 /// `setmkvoid`), the draw mode, the transform (`move`, `rotate`, `matrix*`) and whether
 /// points are drawn at all (`setactive`). Drawing commands paint the current MK on the
-/// lattice; later drawing replaces earlier drawing.
+/// lattice; later drawing replaces earlier drawing. While shapes are drawn
+/// (`<setactive drawshapes="1"/>`) `<drawbox>` also records its faces (shape_set.h), which
+/// `<shapeout file="X"/>` collects into the shape set X (for `<normals>`).
 #pragma once
 
 #include <iosfwd>
@@ -17,6 +19,7 @@
 #include "case/xml_source.h"
 #include "gencase/expression.h"
 #include "gencase/lattice_grid.h"
+#include "gencase/shape_set.h"
 #include "gencase/shapes.h"
 
 namespace seaspring::gencase {
@@ -42,13 +45,25 @@ public:
     /// Evaluates `newvar`/`newvarcte`/`setvar` attributes (also used for `<predefinition>`).
     void defineVariables(pugi::xml_node node, bool constant, bool assign);
 
+    /// The shape sets named by `<shapeout>`, in the order first written (a later
+    /// `<shapeout>` of the same name replaces the set's faces).
+    const std::vector<ShapeSet>& shapeSets() const { return shape_sets_; }
+
 private:
     void runList(pugi::xml_node list, int depth);
     void runCommand(pugi::xml_node cmd, int depth);
     void drawBoxCommand(pugi::xml_node cmd);
     void drawRoundCommand(pugi::xml_node cmd, bool cylinder);
     void fillBoxCommand(pugi::xml_node cmd);
-    std::vector<double> layers(pugi::xml_node cmd) const;
+    /// Layer offsets of `<layers vdp>` (in dp); `marked` receives which carry GenCase's '*'.
+    std::vector<double> layers(pugi::xml_node cmd, std::vector<bool>* marked = nullptr) const;
+    /// True when the current drawing command also records shapes (drawshapes on and the
+    /// current MK's kind selected by <setshapemode>).
+    bool recordsShapes(pugi::xml_node cmd) const;
+    /// Records the faces of one layer of a drawbox; returns how many.
+    std::size_t recordBoxShape(pugi::xml_node cmd, Vec3d lo, Vec3d hi, unsigned faces, double vdp);
+    void setShapeMode(pugi::xml_node cmd);
+    void shapeOut(pugi::xml_node cmd);
     void boxExtent(pugi::xml_node cmd, Vec3d& p0, Vec3d& size) const;
     void report(pugi::xml_node cmd, std::size_t count);
 
@@ -66,7 +81,13 @@ private:
     Affine matrix_;
     std::vector<Affine> saved_matrices_;
     bool draw_points_ = true;
-    bool shapeout_noted_ = false;
+    bool draw_shapes_ = false;    ///< <setactive drawshapes>
+    bool normal_invert_ = false;  ///< <setnormalinvert invert>
+    bool shape_actual_ = true;    ///< <setshapemode> selects the actual geometry
+    unsigned shape_kinds_ = 7;    ///< <setshapemode> MK kinds: 1 bound, 2 fluid, 4 void
+    std::vector<ShapeFace> pending_faces_;  ///< recorded since the last <shapeout>
+    int pending_first_line_ = 0;            ///< line of the first command that recorded them
+    std::vector<ShapeSet> shape_sets_;
 };
 
 /// Parses a `<boxfill>` text ("solid", "all^top", "bottom | left | right") into BoxFaces.

@@ -106,6 +106,14 @@ void writeGeneratedCase(const XmlSource& src, const GeneratedCase& g, const std:
             }
             io::writeParticlesVtu(outputs.back().part, g.particles, extra);
         }
+        // Shape sets as GenCase names them ([CaseName]_X_Actual.vtk), for ParaView.
+        for (const ShapeSet& set : g.shapes) {
+            if (set.faces.empty()) continue;
+            const fs::path dir = base.has_parent_path() ? base.parent_path() : fs::path();
+            const fs::path vtk = dir / shapeFileName(name, set.name);
+            outputs.push_back({vtk.string() + ".part", vtk.string()});
+            writeShapeVtk(outputs.back().part, set);
+        }
         const std::string xml = output_base + ".xml";
         outputs.push_back({xml + ".part", xml});
         pugi::xml_document doc;

@@ -2,7 +2,8 @@
 /// \file resolved_case_writer.h
 /// \brief Writes gencase's outputs: the resolved case OUTDIR/NAME.xml (definition, derived
 ///        constants, parameters with defaults, particle blocks, motion, solids, domain), the
-///        particles OUTDIR/NAME.h5 and optionally a ParaView preview OUTDIR/NAME.vtu. The
+///        particles OUTDIR/NAME.h5, optionally a ParaView preview OUTDIR/NAME.vtu, and each
+///        non-empty shape set X as OUTDIR/NAME_X_Actual.vtk (GenCase's name). The
 ///        sections of the case model are written by its writers (src/case).
 #pragma once
 

@@ -52,6 +52,7 @@ public:
                 fail("/particles/type[", i, "] = ", t, " is not a particle type (0..3)");
             if (p.type[i] == ParticleType::Solid) ++solids;
         }
+        checkNormals(p);
         if (b == nullptr) {
             if (solids > 0) fail(solids, " particles are of type solid but there is no /bonds group");
             return;
@@ -67,6 +68,23 @@ private:
 
     void checkLength(const char* name, std::size_t n, std::uint64_t np) const {
         if (n != np) fail(name, " has ", n, " entries, expected np = ", np);
+    }
+
+    void checkNormals(const ParticleSet& p) const {
+        if (p.normal.empty()) return;
+        const std::size_t nbound = p.boundaryCount();
+        if (p.normal.size() != nbound)
+            fail("/particles/normal has ", p.normal.size(), " entries, expected one per non-fluid particle (",
+                 nbound, ")");
+        for (std::size_t i = 0; i < nbound; ++i)
+            if (p.type[i] == ParticleType::Fluid)
+                fail("/particles/normal: particle ", i, " is fluid, but the ", nbound,
+                     " non-fluid particles must come first (ids 0..", nbound - 1, ")");
+        for (std::size_t i = 0; i < nbound; ++i) {
+            const Vec3f n = p.normal[i];
+            if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+                fail("/particles/normal[", i, "] = (", n.x, ", ", n.y, ", ", n.z, ") is not finite");
+        }
     }
 
     void checkBonds(const BondNetwork& b, const ParticleSet& p, std::size_t solids) const {
@@ -139,6 +157,8 @@ void writeFile(const std::string& tmp, const CaseFileHeader& h, const ParticleSe
         h5::writeDataset(g, "vel", reinterpret_cast<const float*>(p.vel.data()), n, 3);
         h5::writeDataset(g, "rhop", p.rhop);
         h5::writeDataset(g, "mass", p.mass);
+        if (!p.normal.empty())
+            h5::writeDataset(g, "normal", reinterpret_cast<const float*>(p.normal.data()), p.normal.size(), 3);
     }
     if (bonds != nullptr) {
         const h5::Location g = file.createGroup("bonds");
@@ -203,6 +223,20 @@ CaseFileContents readCaseH5(const std::string& path) {
         h5::readDatasetInto(g, "vel", reinterpret_cast<float*>(p.vel.data()), n, 3);
         h5::readDatasetInto(g, "rhop", p.rhop.data(), n);
         h5::readDatasetInto(g, "mass", p.mass.data(), n);
+        if (g.hasChild("normal")) {
+            // Checked against the non-fluid count by CaseChecker; the stored rows bound the allocation.
+            const h5::DatasetShape ns = h5::datasetShape(g, "normal");
+            if (ns.rank != 2 || ns.cols != 3)
+                g.fail("dataset /particles/normal", "has shape " + std::to_string(ns.rows) + " x " +
+                                                        std::to_string(ns.cols) + ", expected nbound x 3");
+            if (ns.rows == 0)
+                g.fail("dataset /particles/normal", "has no rows (a case without normals has no such dataset)");
+            if (ns.rows > n)
+                g.fail("dataset /particles/normal",
+                       "has " + std::to_string(ns.rows) + " rows, more than the np = " + std::to_string(n) + " particles");
+            p.normal.resize(ns.rows);
+            h5::readDatasetInto(g, "normal", reinterpret_cast<float*>(p.normal.data()), ns.rows, 3);
+        }
     }
     c.has_bonds = file.hasChild("bonds");
     if (c.has_bonds) {

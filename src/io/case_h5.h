@@ -9,6 +9,8 @@
 ///   /particles/mk     uint16 [np]          /particles/pos   float64 [np x 3]
 ///   /particles/vel    float32 [np x 3]     /particles/rhop  float32 [np]
 ///   /particles/mass   float32 [np]
+///   /particles/normal float32 [nbound x 3]  only when the case has mDBC normals: the ghost
+///                     vector of each non-fluid particle (ids 0..nbound-1), ParticleSet::normal
 ///   /bonds            only when the case has VCPM solids; attribute first_solid (int64)
 ///   /bonds/offset     uint32 [n_solid+1]   /bonds/neighbour uint32 [slots]
 ///   /bonds/rest_length float64 [slots]     /bonds/kind      uint8 [slots] (BondKind flags)
@@ -18,7 +20,8 @@
 /// reading check consistency: array lengths equal np, type values are ParticleTypes, the
 /// bond rows are exactly the Solid particles (contiguous from first_solid), offsets start
 /// at 0, never decrease and end at the slot count, neighbours < np, kinds are BondKind
-/// flags, rest lengths are positive. Errors name the file and what is wrong.
+/// flags, rest lengths are positive; /particles/normal has one finite entry per non-fluid
+/// particle and those particles are ids 0..nbound-1. Errors name the file and what is wrong.
 #pragma once
 
 #include <cstdint>
