@@ -115,9 +115,17 @@ private:
 SolverParameters readParameters(const ParameterTable& t) {
     SolverParameters p;
     t.number("SavePosDouble");  // positions are always double in seaspring
-    t.choice("Boundary", {1}, "1 DBC", "mDBC");
-    t.number("SlipMode");       // mDBC only
-    t.number("NoPenetration");  // mDBC only
+    p.boundary = t.choice("Boundary", {1, 2}, "1 DBC, 2 mDBC");
+    if (p.boundary == 2) {
+        p.slip_mode = t.choice("SlipMode", {1, 2, 3}, "1 DBC vel=0, 2 no-slip, 3 free-slip");
+        p.mdbc_threshold = t.atLeast("MDbcThreshold", 0, true);
+        if (p.mdbc_threshold > 1) t.fail("MDbcThreshold", "is a kernel sum: must be <= 1");
+        t.requireOff("NoPenetration", 0, "mDBC's no-penetration correction");
+    } else {  // mDBC only: checked to be numbers, as DualSPHysics ignores them with DBC
+        t.number("SlipMode");
+        t.number("MDbcThreshold");
+        t.number("NoPenetration");
+    }
     p.step_algorithm = t.choice("StepAlgorithm", {1, 2}, "1 Verlet, 2 symplectic");
     p.verlet_steps = t.integer("VerletSteps");
     if (p.verlet_steps < 1) t.fail("VerletSteps", "must be >= 1");

@@ -7,7 +7,7 @@
 /// readSolverParameters is strict: unknown, repeated or deprecated keys, a missing required
 /// key and any value seaspring does not implement stop with "FILE:LINE: <parameter>
 /// key=\"K\" value=\"V\": ... is not supported by seaspring (supported: ...)". Keys that have
-/// no effect in the chosen configuration (SlipMode and NoPenetration with DBC, ShiftCoef and
+/// no effect in the chosen configuration (SlipMode, MDbcThreshold and NoPenetration with DBC, ShiftCoef and
 /// ShiftTFS without shifting) are checked to be numbers and otherwise ignored, as
 /// DualSPHysics does.
 #pragma once
@@ -25,6 +25,9 @@ namespace seaspring::model {
 
 /// `<parameters>` as the solver uses them (DualSPHysics meaning and defaults).
 struct SolverParameters {
+    int boundary = 1;           ///< 1 DBC, 2 mDBC
+    int slip_mode = 1;          ///< mDBC: 1 DBC vel=0, 2 no-slip, 3 free-slip
+    double mdbc_threshold = 0;  ///< mDBC SlipMode 1: kernel sum below which rho = rho0
     int step_algorithm = 1;   ///< 1 Verlet, 2 symplectic
     int verlet_steps = 40;    ///< Verlet: an Euler step every this many steps
     int kernel = 2;           ///< 1 cubic spline, 2 Wendland C2

@@ -11,6 +11,7 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"Boundary", "1", K::Number, "boundary method 1:DBC, 2:mDBC"},
         {"SlipMode", "1", K::Number, "mDBC slip mode 1:DBC vel=0, 2:no-slip, 3:free-slip"},
         {"NoPenetration", "0", K::Number, "mDBC no-penetration correction"},
+        {"MDbcThreshold", "0", K::Number, "mDBC slip mode 1: kernel sum below which a boundary particle takes rho0 (0..1)"},
         {"StepAlgorithm", "1", K::Number, "time integration 1:Verlet, 2:Symplectic"},
         {"VerletSteps", "40", K::Number, "Verlet: steps between Euler resynchronisations"},
         {"Kernel", "2", K::Number, "kernel 1:cubic spline, 2:Wendland C2"},

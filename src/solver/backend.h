@@ -13,6 +13,7 @@
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/gauges.h"
+#include "physics/mdbc.h"
 #include "physics/particle_updates.h"
 #include "physics/time_integration.h"
 #include "solver/particle_store.h"
@@ -26,6 +27,15 @@ struct PhysicsChoice {
     physics::Viscosity visco = physics::Viscosity::Artificial;
     physics::DensityDiffusion ddt = physics::DensityDiffusion::None;
     int dim = 3;
+};
+
+/// mDBC (Boundary = 2; physics/mdbc.h).
+struct MdbcSetup {
+    bool enabled = false;
+    physics::SlipMode slip = physics::SlipMode::Vel0;
+    physics::MdbcConstants constants;
+    std::vector<physics::Float4> normal0;  ///< nbound, by id: the ghost vector at t = 0 (0: DBC)
+    std::uint32_t with_normal = 0;         ///< particles with a ghost vector
 };
 
 /// Initial data, particles in id order: [0, nbound) boundary (fixed, moving, then VCPM solid
@@ -45,6 +55,7 @@ struct BackendSetup {
     std::vector<std::uint16_t> moving_object;     ///< nmoving: index into the motions array
     std::uint32_t motion_objects = 0;
     SolidSetup solid;                             ///< VCPM solids (empty when none)
+    MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
 };
 
 /// State copied back to the host, in id order: the particle fields flagged physics::kHost or

@@ -70,6 +70,7 @@ public:
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
         exec_.prepareSort(np);
         if (!s.solid.empty()) solid_.init(s.solid);
+        if (s.mdbc.enabled) assignFrom(mdbc_normal0_, s.mdbc.normal0);
         sortRange(0, nbound_, cs_bound_, true);
         nearFlags(cs_bound_, physics::kNearBound);
         updateSolidSlots();
@@ -114,6 +115,7 @@ public:
             a.hydro_out = solid_.fluid_force.data();
         }
         const physics::FluidConstants& c = setup_.fluid;
+        if (setup_.mdbc.enabled) mdbc(a);
         exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, c});
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
@@ -233,6 +235,23 @@ private:
         a.nbound = nbound_;
         a.np = nbound_ + nfluid_;
         return a;
+    }
+
+    /// mDBC: boundary densities (and velocities) from their ghost nodes.
+    void mdbc(const ForceArgs& a) {
+        physics::MdbcInputs in;
+        in.normal0 = mdbc_normal0_.data();
+        in.first_moving = setup_.first_moving;
+        in.nmoving = setup_.nmoving;
+        in.moving_pos0 = moving_pos0_.data();
+        in.moving_object = moving_object_.data();
+        in.motions = motions_.data();
+        in.cell_start_fluid = cs_fluid_.data();
+        in.near = near_.data();
+        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
+            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::mdbc(exec_, setup_.mdbc.slip, a, in,
+                                                                           setup_.mdbc.constants);
+        });
     }
 
     /// The hydrodynamic force on boundary particles slot[0..n) (null: the block [0, n)).
@@ -361,6 +380,7 @@ private:
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
     Buf<physics::Double3> moving_pos0_;
+    Buf<physics::Float4> mdbc_normal0_;  ///< mDBC only: per boundary id
     Buf<std::uint16_t> moving_object_;
     Buf<physics::RigidMotionGpu> motions_, solid_motions_;
     SolidArrays<Exec::template Buffer> solid_;

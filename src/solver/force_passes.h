@@ -13,6 +13,7 @@
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/fluid_pair_terms.h"
+#include "physics/mdbc.h"
 #include "physics/particle_updates.h"
 #include "solver/backend.h"
 
@@ -42,6 +43,10 @@ struct ForcePasses {
     /// sorted index s when `slot` is null.
     static void hydro(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a, const std::uint32_t* slot,
                       std::uint32_t n, physics::Double3* out);
+    /// mDBC: the density (and velocity) of boundary particles [0, a.nbound) from their ghost
+    /// nodes (physics/mdbc.h), before the pressure pass.
+    static void mdbc(const Exec& exec, physics::SlipMode slip, const ForceArgs& a, const physics::MdbcInputs& in,
+                     const physics::MdbcConstants& m);
 };
 
 /// Calls f(Kernel{}, std::integral_constant<int, dim>{}) for the run's kernel and dimension.

@@ -60,6 +60,18 @@ struct BoundThenHydroPass {
     }
 };
 
+/// mDBC boundary particle i (physics::mdbcBoundaryAt).
+template <class Kernel, int kDim>
+struct MdbcPass {
+    physics::ParticleView v;
+    physics::MdbcInputs in;
+    physics::SlipMode slip;
+    physics::FluidConstants c;
+    physics::MdbcConstants m;
+    physics::CellGrid g;
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::mdbcBoundaryAt<Kernel, kDim>(i, v, in, slip, c, m, g); }
+};
+
 /// Calls f(FluidOptions<...>{}) for the run's viscosity and density diffusion.
 template <class Kernel, int kDim, class F>
 void dispatchViscoDdt(const PhysicsChoice& c, F&& f) {
@@ -132,6 +144,13 @@ void ForcePasses<Exec, Kernel, kDim>::hydro(const Exec& exec, const PhysicsChoic
     dispatchVisco<Kernel, kDim>(choice, [&](auto opt) {
         exec.template forEach<LaunchHydro>(0u, n, HydroForcePass<decltype(opt)>{a, slot, out});
     });
+}
+
+template <class Exec, class Kernel, int kDim>
+void ForcePasses<Exec, Kernel, kDim>::mdbc(const Exec& exec, physics::SlipMode slip, const ForceArgs& a,
+                                           const physics::MdbcInputs& in, const physics::MdbcConstants& m) {
+    if (a.nbound == 0) return;
+    exec.template forEach<LaunchBoundPairs>(0u, a.nbound, MdbcPass<Kernel, kDim>{a.v, in, slip, a.c, m, a.g});
 }
 
 }  // namespace seaspring::solver

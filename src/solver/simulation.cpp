@@ -42,7 +42,10 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     s << ", " << ddt[p.density_dt];
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
     static const char* const kCells[] = {"?", "2h", "h", "2h/3", "h/2"};
-    s << ", DBC, CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
+    static const char* const kSlip[] = {"?", "vel=0", "no-slip", "free-slip"};
+    if (p.boundary == 2) s << ", mDBC " << kSlip[p.slip_mode >= 1 && p.slip_mode <= 3 ? p.slip_mode : 0];
+    else s << ", DBC";
+    s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
     if (skin > 0) s << " with a skin of " << skin << " cell";
     return s.str();
 }
@@ -61,6 +64,42 @@ int resolveCellDiv(const SolverCase& c, int cell_div) {
 }
 
 double resolveSkin(const RunOptions& o) { return o.skin.value_or(physics::kDefaultSkinFraction); }
+
+static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
+    const ParticleSet& ps = c.particles;
+    if (ps.normal.empty())
+        throwInputError(c.h5_path, 0,
+                        "Boundary=2 (mDBC) needs the boundary normals, but the case file has no /particles/normal: "
+                        "add an active <normals> section to the case definition (docs/case-format.md) and run "
+                        "gencase again");
+    if (ps.normal.size() != nbound)
+        throwInputError(c.h5_path, 0, "/particles/normal has " + std::to_string(ps.normal.size()) +
+                                          " entries, expected one per boundary particle (" + std::to_string(nbound) + ")");
+    MdbcSetup m;
+    m.enabled = true;
+    m.slip = physics::SlipMode(c.params.slip_mode);
+    m.constants.threshold = float(c.params.mdbc_threshold);
+    m.constants.dp2 = float(c.constants.dp * c.constants.dp);
+    m.constants.cs02 = float(c.constants.speedsound * c.constants.speedsound);
+    m.constants.gx = float(c.constants.gravity.x);
+    m.constants.gy = float(c.constants.gravity.y);
+    m.constants.gz = float(c.constants.gravity.z);
+    m.normal0.assign(nbound, physics::Float4{0, 0, 0, 0});
+    std::uint32_t with = 0;
+    for (std::uint32_t id = 0; id < nbound; ++id) {
+        const Vec3f n = ps.normal[id];
+        // VCPM solids deform: a fixed initial normal would be wrong, so they keep DBC.
+        if (ps.type[id] == ParticleType::Solid || (n.x == 0.f && n.y == 0.f && n.z == 0.f)) continue;
+        m.normal0[id] = physics::Float4{n.x, n.y, n.z, 0.f};
+        ++with;
+    }
+    if (with == 0)
+        throwInputError(c.h5_path, 0,
+                        "Boundary=2 (mDBC) but no fixed or moving boundary particle has a normal (all of "
+                        "/particles/normal is zero): check the <normals> geometry of the case definition");
+    m.with_normal = with;
+    return m;
+}
 
 BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
     using namespace physics;
@@ -151,6 +190,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
                         " particles but nmoving is " + std::to_string(c.nmoving));
     s.motion_objects = std::uint32_t(c.motion.objects.size());
     s.solid = makeSolidSetup(c);
+    if (p.boundary == 2) s.mdbc = makeMdbcSetup(c, s.nbound);
     return s;
 }
 
@@ -184,6 +224,11 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o));
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
+    if (setup_.mdbc.enabled)
+        log_ << "  mDBC: " << setup_.mdbc.with_normal << " of " << setup_.nbound
+             << " boundary particles have a ghost node"
+             << (c.nsolid > 0 ? "; the " + std::to_string(c.nsolid) + " VCPM solid particles keep DBC" : std::string())
+             << "\n";
     if (!setup_.solid.empty()) {
         for (const std::string& l : setup_.solid.body_lines) log_ << "  " << l << "\n";
         log_ << "  VCPM sub-step " << setup_.solid.dt << " s (VcpmDtCoef " << c.params.vcpm_dt_coef

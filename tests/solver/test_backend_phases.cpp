@@ -189,6 +189,25 @@ TYPED_TEST(BackendPhases, SymplecticStepWithMovingBoundary2D) {
     EXPECT_EQ(c.divides, cb.divides);
 }
 
+/// mDBC (a fixed tank and a moving piston with ghost nodes), each SlipMode: 1 sets the boundary
+/// density, 2 and 3 the density and the velocity, before every force evaluation.
+TYPED_TEST(BackendPhases, SymplecticStepsMdbc2D) {
+    for (const char* slip : {"1", "2", "3"}) {
+        const std::string dir = test::scratch(std::string("phases_mdbc2d_") + slip);
+        const std::string xml =
+            test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTankMdbc2D_Def.xml");
+        const std::string kase = test::generateCase(
+            dir, "piston_mdbc",
+            test::replaceOnce(xml, "<!--PARAMETERS-->",
+                              std::string(R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value=")") +
+                                  slip +
+                                  R"(" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)"));
+        Pair<TypeParam> p(kase, 0);
+        ASSERT_TRUE(p.ok) << p.skip_reason;
+        symplecticSteps(p, 3, std::string("2D symplectic mDBC slip ") + slip);
+    }
+}
+
 TYPED_TEST(BackendPhases, SymplecticStepThinSkinSortsSometimes2D) {
     const std::string dir = test::scratch("phases_sym2d_thin");
     const std::string kase = pistonTank(

@@ -419,8 +419,7 @@ TEST(SolverCaseErrors, BlocksMustBeContiguousAndKnown) {
 // ---- Unsupported features ------------------------------------------------------------------
 
 TEST(SolverCaseErrors, UnsupportedParameterValuesNameTheLine) {
-    expectParameterError("Boundary", "1", "2",
-                         {"mDBC is not supported by seaspring (supported: 1 DBC)"});
+    expectParameterError("Boundary", "1", "3", {"is not supported by seaspring (supported: 1 DBC, 2 mDBC)"});
     expectParameterError("Shifting", "0", "1", {"not supported by seaspring (supported: 0 none)"});
     expectParameterError("XPeriodicIncY", "0", "0.5",
                          {"periodic boundaries is not supported by seaspring"});

@@ -1,0 +1,193 @@
+// SeaSpring — MIT licence.
+/// \file test_mdbc_physics.cpp
+/// \brief The mDBC correction (physics/mdbc.h) on a fluid lattice filling the half space above
+///        a wall, with the sums formed by the solver's own neighbour walk:
+///  - SlipMode 1: a linear density field is reproduced exactly (to float rounding) at the
+///    boundary particle, whatever its gradient: the first-order interpolation at the ghost node
+///    and the extrapolation back along the normal;
+///  - SlipMode 2/3: the hydrostatic field of a still tank gives the boundary particle the
+///    hydrostatic density at its own depth (the pressure cloning adds rho0 g |n|); the velocity
+///    is the fluid's mirrored (no-slip) or copied (free-slip);
+///  - a ghost node without fluid: rho0 and the wall velocity;
+///  - the matrix inverse against a hand-checked matrix.
+/// Broken on purpose while writing: the sign of the extrapolation jump (SlipMode 1 then misses
+/// by 2 G.n: LinearDensity fails), the sign of the cloning's normal distance (Hydrostatic fails
+/// by 2 rho0 g |n| / c0^2), the factor 2 of the no-slip mirror (NoSlip fails), free-slip copying
+/// the whole ghost velocity (FreeSlip fails).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <numeric>
+#include <vector>
+
+#include "physics/fluid_constants.h"
+#include "physics/mdbc.h"
+
+using namespace seaspring::physics;
+
+namespace {
+
+/// Fluid particles on the lattice above z = 0 (rows at (k + 1/2) dp, k = 0..rows-1), sorted by
+/// cell then index, with the cell ranges of the grid.
+struct FluidLattice {
+    CellGrid g;
+    FluidConstants c;
+    std::vector<Float4> poscell, velrho;
+    std::vector<std::uint32_t> cell_start;
+    double dp = 0.01;
+
+    FluidLattice(int dim, const std::function<Float4(const Double3&)>& field) {
+        const double h = 2.0 * dp, width = 0.2;
+        FluidInputs fi;
+        fi.h = h;
+        fi.dp = dp;
+        fi.dim = dim;
+        fi.cs0 = 20.0;
+        fi.b = 20.0 * 20.0 * 1000.0 / 7.0;
+        fi.rhop0 = 1000.0;
+        fi.massfluid = 1000.0 * (dim == 3 ? dp * dp * dp : dp * dp);
+        fi.massbound = fi.massfluid;
+        fi.gravity_z = -9.81;
+        c = makeFluidConstants(fi);
+        EXPECT_TRUE(makeCellGrid(-width / 2, dim == 3 ? -width / 2 : 0.0, -0.05, width / 2, dim == 3 ? width / 2 : 0.0,
+                                 0.15, h, 2, g));
+        struct P {
+            std::uint32_t cell;
+            std::uint32_t k;
+            Float4 pc, vr;
+        };
+        std::vector<P> parts;
+        const int nx = int(width / dp);
+        for (int iz = 0; iz < 12; ++iz)
+            for (int iy = 0; iy < (dim == 3 ? nx : 1); ++iy)
+                for (int ix = 0; ix < nx; ++ix) {
+                    const Double3 x{-width / 2 + (ix + 0.5) * dp, dim == 3 ? -width / 2 + (iy + 0.5) * dp : 0.0,
+                                    (iz + 0.5) * dp};
+                    std::uint32_t lin;
+                    const Float4 pc = makePosCell(g, x, lin);
+                    parts.push_back({lin, std::uint32_t(parts.size()), pc, field(x)});
+                }
+        std::stable_sort(parts.begin(), parts.end(), [](const P& a, const P& b) { return a.cell < b.cell; });
+        cell_start.assign(g.cellCount() + 1, 0);
+        for (const P& p : parts) {
+            poscell.push_back(p.pc);
+            velrho.push_back(p.vr);
+        }
+        std::uint32_t k = 0;
+        for (std::uint32_t cell = 0; cell <= g.cellCount(); ++cell) {
+            while (k < parts.size() && parts[k].cell < cell) ++k;
+            cell_start[cell] = k;
+        }
+    }
+
+    /// The corrected boundary particle at x_b with ghost vector n.
+    template <int kDim>
+    MdbcResult correct(const Double3& xb, const Double3& n, SlipMode slip, float wall_vx = 0.f) const {
+        std::uint32_t lin;
+        const Float4 gpc = makePosCell(g, Double3{xb.x + n.x, xb.y + n.y, xb.z + n.z}, lin);
+        const MdbcSums s = mdbcGhostSums<WendlandKernel, kDim>(gpc, cell_start.data(), poscell.data(), velrho.data(), c, g);
+        MdbcConstants m;
+        m.dp2 = float(dp * dp);
+        m.cs02 = c.cs0 * c.cs0;
+        m.gz = -9.81f;
+        return mdbcCorrect<kDim>(s, slip, float(n.x), float(n.y), float(n.z), wall_vx, 0.f, 0.f, 0.f, 0.f, 0.f, c, m);
+    }
+};
+
+}  // namespace
+
+TEST(MdbcPhysics, InverseOfAKnownMatrix) {
+    // A = [[2,1,0],[1,3,1],[0,1,4]]: det = 2*(12-1) - 1*(4-0) = 18.
+    const float a[4][4] = {{2, 1, 0, 0}, {1, 3, 1, 0}, {0, 1, 4, 0}, {0, 0, 0, 0}};
+    double inv[4][4], det;
+    ASSERT_TRUE(mdbcInvert<3>(a, inv, det));
+    EXPECT_NEAR(det, 18.0, 1e-12);
+    for (int r = 0; r < 3; ++r)
+        for (int q = 0; q < 3; ++q) {
+            double s = 0;
+            for (int k = 0; k < 3; ++k) s += double(a[r][k]) * inv[k][q];
+            EXPECT_NEAR(s, r == q ? 1.0 : 0.0, 1e-12) << r << "," << q;
+        }
+    const float sing[4][4] = {{1, 2, 0, 0}, {2, 4, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+    EXPECT_FALSE(mdbcInvert<2>(sing, inv, det));
+    EXPECT_EQ(det, 0.0);
+}
+
+/// Tolerance: 2e-5 rho0 (float sums of ~100 terms of size rho0, a first-order method is exact on
+/// linear fields; measured 1e-6-4e-6 rho0).
+TEST(MdbcPhysics, SlipMode1ReproducesALinearDensityField) {
+    const double gx = 300.0, gy = -150.0, gz = 800.0;  // kg/m^3 per m: up to 8 kg/m^3 over the kernel
+    for (int dim : {2, 3}) {
+        auto rho = [&](const Double3& x) { return 1000.0 + gx * x.x + (dim == 3 ? gy * x.y : 0.0) + gz * (x.z - 0.05); };
+        FluidLattice f(dim, [&](const Double3& x) { return Float4{0, 0, 0, float(rho(x))}; });
+        // Boundary particles of the first two layers under the interface, normal along +z; one at
+        // an oblique normal (a particle near a corner whose ghost lies up and to the side).
+        const std::vector<std::pair<Double3, Double3>> cases = {
+            {{0.003, 0.0, -0.005}, {0.0, 0.0, 0.01}},
+            {{-0.012, 0.0, -0.015}, {0.0, 0.0, 0.03}},
+            {{0.02, 0.0, -0.005}, {0.006, 0.0, 0.008}},
+        };
+        for (const auto& [xb, n] : cases) {
+            const MdbcResult r = dim == 2 ? f.correct<2>(xb, n, SlipMode::Vel0) : f.correct<3>(xb, n, SlipMode::Vel0);
+            EXPECT_FALSE(r.set_velocity);
+            EXPECT_NEAR(r.rho, rho(xb), 2e-5 * 1000.0) << dim << "D, boundary particle at z = " << xb.z;
+        }
+    }
+}
+
+/// Still water: rho = rho0 + rho0 g (H - z) / c0^2 (the linear equation of state the cloning
+/// uses), H = 0.12 m. The boundary particle takes the hydrostatic density at its own depth: the
+/// interpolated ghost value plus the jump rho0 g |n| / c0^2. Tolerance 2e-5 rho0 (the first-order
+/// ghost value is exact on a linear field; the bulk lattice is full, A11 = 1 within 1e-3).
+TEST(MdbcPhysics, SlipModes2And3CloneTheHydrostaticPressure) {
+    const double g = 9.81, H = 0.12, c02 = 400.0;
+    for (int dim : {2, 3}) {
+        auto rho = [&](double z) { return 1000.0 + 1000.0 * g * (H - z) / c02; };
+        FluidLattice f(dim, [&](const Double3& x) { return Float4{0.1f, 0.f, 0.f, float(rho(x.z))}; });
+        for (SlipMode slip : {SlipMode::NoSlip, SlipMode::FreeSlip}) {
+            for (int layer : {1, 2, 3}) {
+                const Double3 xb{0.004, 0.0, -(layer - 0.5) * f.dp};
+                const Double3 n{0.0, 0.0, (2 * layer - 1) * f.dp};
+                const MdbcResult r = dim == 2 ? f.correct<2>(xb, n, slip) : f.correct<3>(xb, n, slip);
+                EXPECT_TRUE(r.set_velocity);
+                EXPECT_NEAR(r.rho, rho(xb.z), 2e-5 * 1000.0) << dim << "D layer " << layer;
+                // The fluid moves at 0.1 m/s along x: no-slip mirrors it, free-slip copies it.
+                EXPECT_NEAR(r.vx, slip == SlipMode::NoSlip ? -0.1f : 0.1f, 1e-4) << dim << "D layer " << layer;
+                EXPECT_NEAR(r.vz, 0.f, 1e-5);
+            }
+        }
+    }
+}
+
+TEST(MdbcPhysics, NoSlipMirrorsAboutTheWallVelocity) {
+    FluidLattice f(2, [](const Double3&) { return Float4{0.1f, 0.f, 0.f, 1000.f}; });
+    const MdbcResult r = f.correct<2>({0.0, 0.0, -0.005}, {0.0, 0.0, 0.01}, SlipMode::NoSlip, 0.5f);
+    EXPECT_NEAR(r.vx, 2 * 0.5f - 0.1f, 1e-4);  // v_b = 2 v_wall - v_ghost
+}
+
+/// Free-slip keeps the tangential velocity and mirrors the normal one (the wall stays
+/// impermeable); no-slip mirrors both.
+TEST(MdbcPhysics, FreeSlipMirrorsOnlyTheNormalVelocity) {
+    FluidLattice f(3, [](const Double3&) { return Float4{0.1f, 0.02f, -0.05f, 1000.f}; });
+    const MdbcResult fs = f.correct<3>({0.0, 0.0, -0.005}, {0.0, 0.0, 0.01}, SlipMode::FreeSlip);
+    EXPECT_NEAR(fs.vx, 0.1f, 1e-5);
+    EXPECT_NEAR(fs.vy, 0.02f, 1e-5);
+    EXPECT_NEAR(fs.vz, 0.05f, 1e-5);
+    const MdbcResult ns = f.correct<3>({0.0, 0.0, -0.005}, {0.0, 0.0, 0.01}, SlipMode::NoSlip);
+    EXPECT_NEAR(ns.vx, -0.1f, 1e-5);
+    EXPECT_NEAR(ns.vy, -0.02f, 1e-5);
+    EXPECT_NEAR(ns.vz, 0.05f, 1e-5);
+}
+
+TEST(MdbcPhysics, AGhostNodeWithoutFluidGivesRho0AndTheWallVelocity) {
+    FluidLattice f(2, [](const Double3&) { return Float4{0.1f, 0.f, 0.f, 1010.f}; });
+    // Ghost node 0.2 m below the fluid: nothing in reach.
+    for (SlipMode slip : {SlipMode::Vel0, SlipMode::NoSlip, SlipMode::FreeSlip}) {
+        const MdbcResult r = f.correct<2>({0.0, 0.0, -0.04}, {0.0, 0.0, -0.01}, slip, 0.25f);
+        EXPECT_EQ(r.rho, 1000.f);
+        EXPECT_EQ(r.vx, 0.25f);
+    }
+}
