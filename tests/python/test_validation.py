@@ -83,6 +83,41 @@ class Metrics(unittest.TestCase):
         with self.assertRaisesRegex(metrics.MetricError, "use abs_tol"):
             metrics.evaluate(Check("mean", rel_tol=0.1), zero, self.t, v)
 
+    def test_onset_is_the_first_interpolated_crossing_of_the_threshold(self):
+        t = np.array([0.0, 0.1, 0.2, 0.3, 0.4, 0.5])
+        v = np.array([0.0, 0.0, 0.5, 2.0, 0.5, 3.0])      # reaches 1 between 0.2 and 0.3
+        self.assertAlmostEqual(metrics.onset(t, v, 1.0), 0.2 + 0.1 / 3.0, 12)
+        self.assertAlmostEqual(metrics.onset(t, v, 1.0, [0.35, 0.5]), 0.4 + 0.1 * 0.5 / 2.5, 12)
+        self.assertAlmostEqual(metrics.onset(t, -v, -1.0), 0.2 + 0.1 / 3.0, 12)   # falling to a negative one
+        with self.assertRaisesRegex(metrics.MetricError, "never reaches the threshold 5"):
+            metrics.onset(t, v, 5.0)
+        with self.assertRaisesRegex(metrics.MetricError, "already at the threshold"):
+            metrics.onset(t, v, 1.0, [0.3, 0.5])
+        # as a check: a noisy step about 0.03 s early against a clean one (ours crosses 0.5
+        # between the samples at 0.519 and 0.52 s)
+        tt = np.linspace(0.0, 1.0, 1001)
+        ours = np.where(tt >= 0.52, 1.0 + 0.2 * np.sin(200 * tt), 0.0)
+        rt = np.array([0.0, 0.4, 0.5, 0.6, 1.0])
+        rv = np.array([0.0, 0.0, 0.0, 1.0, 1.0])            # crosses 0.5 at 0.55
+        data = Reference(label="d", kind="experiment", file="x", time_band=0.01)
+        c = Check("onset_time", abs_tol=0.01, threshold=0.5)
+        out = metrics.evaluate(c, data, tt, ours, (rt, rv))
+        self.assertAlmostEqual(out["reference"], 0.55, 12)
+        self.assertTrue(0.519 < out["ours"] < 0.52, out["ours"])
+        self.assertAlmostEqual(out["error"], out["ours"] - 0.55, 12)
+        self.assertEqual(out["error_kind"], "abs")
+        self.assertFalse(out["passed"])
+        self.assertTrue(metrics.evaluate(Check("onset_time", abs_tol=0.035, threshold=0.5), data, tt, ours,
+                                         (rt, rv))["passed"])
+        self.assertFalse(metrics.evaluate(Check("onset_time", abs_tol=0.025, threshold=0.5), data, tt, ours,
+                                          (rt, rv))["passed"])
+        self.assertTrue(metrics.evaluate(Check("onset_time", abs_tol=0.025, threshold=0.5, use_band=True),
+                                         data, tt, ours, (rt, rv))["passed"])
+        with self.assertRaisesRegex(metrics.MetricError, "ours: never reaches"):
+            metrics.evaluate(Check("onset_time", abs_tol=0.01, threshold=0.5), data, tt, 0 * tt, (rt, rv))
+        with self.assertRaisesRegex(metrics.MetricError, "reference: never reaches"):
+            metrics.evaluate(Check("onset_time", abs_tol=0.01, threshold=0.5), data, tt, ours, (rt, 0 * rv))
+
     def test_convergence_orders(self):
         dps = [0.004, 0.002, 0.001]
         errs = [3.0 * d ** 2 for d in dps]
@@ -224,6 +259,26 @@ class Spec(unittest.TestCase):
         self.assertSpecError(self.mutated(lambda d: d["quantities"][0]["references"][0].update(kind="guess")),
                              f"{q}.references[0].kind", '"guess"')
         self.assertSpecError(self.mutated(lambda d: d["quantities"][0].pop("column")), f"{q}.column")
+        self.assertSpecError(self.mutated(lambda d: d["quantities"][0].update(ylim=[2, 1])), f"{q}.ylim", "[2, 1]")
+        self.assertEqual(self.load(self.mutated(lambda d: d["quantities"][0].update(ylim=[-1, 2]))).quantities[0].ylim,
+                         [-1.0, 2.0])
+
+    def test_onset_time_needs_a_threshold_and_a_series(self):
+        def add(check):
+            return self.mutated(lambda d: d["quantities"][0]["checks"].append(check))
+        s = self.load(add({"metric": "onset_time", "against": 0, "threshold": 500, "window": [0.1, 0.4],
+                           "abs_tol": 0.01}))
+        c = s.quantities[0].checks[4]
+        self.assertEqual((c.metric, c.threshold, c.window), ("onset_time", 500.0, [0.1, 0.4]))
+        q = "quantities[0]"
+        self.assertSpecError(add({"metric": "onset_time", "against": 0, "abs_tol": 0.01}),
+                             f"{q}.checks[4].threshold: missing")
+        self.assertSpecError(add({"metric": "onset_time", "against": 1, "threshold": 1, "abs_tol": 0.01}),
+                             f"{q}.checks[4].against", "onset_time needs")
+        self.assertSpecError(add({"metric": "mean", "against": 0, "threshold": 1, "rel_tol": 0.1}),
+                             f"{q}.checks[4].threshold", "only onset_time takes a threshold")
+        self.assertSpecError(add({"metric": "onset_time", "against": 0, "threshold": "1", "abs_tol": 0.01}),
+                             f"{q}.checks[4].threshold", "finite number")
 
     def test_unknown_keys_warn(self):
         s = self.load(self.mutated(lambda d: d.update(colour="red", _comment="ok")))

@@ -52,6 +52,8 @@ def evaluate_case(spec, runs):
             rc = {"key": c.key, "metric": c.metric, "against": c.against, "against_label": ref.label,
                   "rel_tol": c.rel_tol, "abs_tol": c.abs_tol, "window": c.window,
                   "use_band": c.use_band, "results": {}}
+            if c.threshold is not None:
+                rc["threshold"] = c.threshold
             for res, (t, v) in cq["ours"].items():
                 ref_s, ref_err = refs[c.against]
                 if ref_err:

@@ -8,6 +8,10 @@ Definitions (docs/validation.md):
   RMS of the difference; against an analytic value, RMS of our samples minus the value.
 - mean: time average (trapezoidal) of ours over the window against the analytic value, or
   against the reference's time average over the same window.
+- onset_time: the first time in the window at which the series reaches the check's threshold
+  (rising to it for a threshold >= 0, falling to it for a negative one), interpolated linearly
+  between the samples on either side, ours against the reference's (e.g. the arrival of an
+  impact at a pressure sensor).
 A check passes when |ours - reference| <= abs_tol + rel_tol * |scale| (+ the reference's band
 when use_band), scale being the reference value (rms: the reference's peak). The error shown
 is relative when only rel_tol is given, absolute otherwise.
@@ -56,6 +60,30 @@ def time_mean(t, v, window=None):
     tt = np.concatenate(([window[0]], t[inner], [window[1]]))
     vv = np.interp(tt, t, v)
     return float(np.sum(0.5 * (vv[1:] + vv[:-1]) * np.diff(tt)) / (window[1] - window[0]))
+
+
+def onset(t, v, threshold, window=None):
+    """Time of the first crossing of THRESHOLD inside the window: the first sample with
+    value >= threshold (<= threshold when threshold < 0), the time interpolated linearly
+    between it and the sample before. The series must start below the threshold (above it
+    for a negative one) inside the window: a series that is already there has no onset."""
+    m = _window(t, window)
+    idx = np.nonzero(m)[0]
+    if idx.size == 0:
+        raise MetricError(f"no sample inside the window {window} (series spans {t[0]:.4g}-{t[-1]:.4g} s)")
+    tt, vv = t[idx], v[idx]
+    sign = 1.0 if threshold >= 0 else -1.0
+    hit = np.nonzero(sign * vv >= sign * threshold)[0]
+    where = f"inside the window {window}" if window is not None else "in the series"
+    if hit.size == 0:
+        raise MetricError(f"never reaches the threshold {threshold:g} {where} "
+                          f"(extreme {vv.max() if sign > 0 else vv.min():.4g})")
+    k = int(hit[0])
+    if k == 0:
+        raise MetricError(f"already at the threshold {threshold:g} at the first sample {where} "
+                          f"(t = {tt[0]:.4g} s): no onset")
+    v0, v1 = vv[k - 1], vv[k]
+    return float(tt[k - 1] + (threshold - v0) / (v1 - v0) * (tt[k] - tt[k - 1]))
 
 
 def rms_error(t, v, rt, rv, window=None):
@@ -114,6 +142,22 @@ def evaluate(check, ref, t, v, ref_series=None):
         ours = time_mean(t, v, w)
         refv = ref.value if analytic else time_mean(rt, rv, w if w else [float(t[0]), float(t[-1])])
         scale, diff, band = refv, ours - refv, ref.band
+    elif check.metric == "onset_time":
+        if check.threshold is None:
+            raise MetricError("onset_time needs a threshold")
+        if analytic:
+            raise MetricError("onset_time needs a reference with a time series")
+        if w is not None:
+            _covers(t, w)
+        try:
+            ours = onset(t, v, check.threshold, w)
+        except MetricError as e:
+            raise MetricError(f"ours: {e}")
+        try:
+            refv = onset(rt, rv, check.threshold, w)
+        except MetricError as e:
+            raise MetricError(f"reference: {e}")
+        scale, diff, band = refv, ours - refv, ref.time_band
     else:
         raise MetricError(f"unknown metric {check.metric}")
     band = band if check.use_band else 0.0

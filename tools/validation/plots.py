@@ -42,9 +42,13 @@ def quantity_plot(path, title, q, cq, runs):
             lo, hi = min(ys), max(ys)
             pad = 0.08 * (hi - lo) if hi > lo else 0.1 * abs(hi) or 1.0
             ax.set_ylim(lo - pad, hi + pad)
+    if getattr(q, "ylim", None):                          # the spec's fixed y range
+        ax.set_ylim(*q.ylim)
     windows = {tuple(c.window) for c in q.checks if c.window}
     for w in sorted(windows):
         ax.axvspan(w[0], w[1], color="0.5", alpha=0.06, lw=0)
+    for thr in sorted({c.threshold for c in q.checks if getattr(c, "threshold", None) is not None}):
+        ax.axhline(thr, color="0.4", ls=":", lw=0.8)      # onset_time thresholds
     ax.set_xlabel("time [s]")
     ax.set_ylabel(q.label)
     ax.set_title(title, fontsize=10)

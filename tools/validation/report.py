@@ -22,7 +22,8 @@ def device_text(run):
 
 def _check_name(q, c):
     w = f" {c['window'][0]:g}–{c['window'][1]:g} s" if c.get("window") else ""
-    return f"`{q['name']}` {c['metric']}{w} vs {c['against_label']}"
+    thr = f" (threshold {c['threshold']:g})" if c.get("threshold") is not None else ""
+    return f"`{q['name']}` {c['metric']}{thr}{w} vs {c['against_label']}"
 
 
 def _ours(out):

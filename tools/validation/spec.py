@@ -11,7 +11,7 @@ from typing import List, Optional
 
 from . import ROOT
 
-METRICS = ("peak", "peak_time", "rms", "mean")
+METRICS = ("peak", "peak_time", "rms", "mean", "onset_time")
 KINDS = ("experiment", "numerical", "analytic")
 RESOLUTIONS = ("coarse", "medium", "fine")
 
@@ -47,6 +47,8 @@ class Check:
     # extension: tolerances for one resolution, e.g. {"coarse": {"rel_tol": 0.45}} (CI's coarse
     # runs judged by a regression bound, the fine runs by the published acceptance)
     by_resolution: dict = field(default_factory=dict)
+    # onset_time: the value whose first crossing in the window is the onset (value units)
+    threshold: Optional[float] = None
 
 
 @dataclass
@@ -60,6 +62,7 @@ class Quantity:
     subtract: Optional[dict] = None    # extension: {"gauge": ..., "column": ...} subtracted (e.g. a root marker)
     references: List[Reference] = field(default_factory=list)
     checks: List[Check] = field(default_factory=list)
+    ylim: Optional[List[float]] = None  # extension: the plot's y range (e.g. to keep noisy spikes from hiding the data)
 
 
 @dataclass
@@ -188,7 +191,7 @@ def _reference(r, d, key, root):
 
 
 def _check(r, d, key, refs, qkey):
-    r.obj(d, key, {"metric", "against", "rel_tol", "abs_tol", "window", "use_band", "by_resolution"})
+    r.obj(d, key, {"metric", "against", "rel_tol", "abs_tol", "window", "use_band", "by_resolution", "threshold"})
     metric = r.get(d, key, "metric", "str")
     if metric not in METRICS:
         r.fail(f"{key}.metric", f"expected one of {', '.join(METRICS)}", metric)
@@ -211,15 +214,21 @@ def _check(r, d, key, refs, qkey):
         if rel is None and ab is None:
             r.fail(bkey, "needs rel_tol or abs_tol", tol)
         c.by_resolution[res] = (rel, ab)
+    c.threshold = r.get(d, key, "threshold", "number", required=metric == "onset_time")
+    if c.threshold is not None:
+        if metric != "onset_time":
+            r.fail(f"{key}.threshold", f"only onset_time takes a threshold, not {metric}", c.threshold)
+        c.threshold = float(c.threshold)
     ref = refs[c.against]
-    if ref.kind == "analytic" and metric == "peak_time":
-        r.fail(f"{key}.against", "peak_time needs a reference with a time series, "
+    if ref.kind == "analytic" and metric in ("peak_time", "onset_time"):
+        r.fail(f"{key}.against", f"{metric} needs a reference with a time series, "
                f"not the analytic value '{ref.label}'", c.against)
     return c
 
 
 def _quantity(r, d, key, root):
-    r.obj(d, key, {"name", "label", "gauge", "column", "scale", "marker", "subtract", "references", "checks"})
+    r.obj(d, key, {"name", "label", "gauge", "column", "scale", "marker", "subtract", "references", "checks",
+                   "ylim"})
     q = Quantity(name=r.get(d, key, "name", "str"), label=r.get(d, key, "label", "str"))
     if not all(ch.isalnum() or ch in "_-" for ch in q.name):
         r.fail(f"{key}.name", "use letters, digits, '_' or '-' only (it names files)", q.name)
@@ -248,6 +257,12 @@ def _quantity(r, d, key, root):
                show_value="column" in d)
     q.column = col
     q.scale = float(r.get(d, key, "scale", "number", required=False, default=1.0))
+    ylim = r.get(d, key, "ylim", "list", required=False)
+    if ylim is not None:
+        ok = len(ylim) == 2 and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in ylim)
+        if not ok or not ylim[0] < ylim[1]:
+            r.fail(f"{key}.ylim", "expected [y_min, y_max] with y_min < y_max", ylim)
+        q.ylim = [float(ylim[0]), float(ylim[1])]
     refs = r.get(d, key, "references", "list", required=False, default=[])
     q.references = [_reference(r, x, f"{key}.references[{i}]", root) for i, x in enumerate(refs)]
     checks = r.get(d, key, "checks", "list", required=False, default=[])
