@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# Runs ON the GPU machine (device tool), from the repository root, with build-dev carried
+# (tools/device_build.sh): the mDBC set of issue 12, one table per step in $OUT.
+#   still     still-water tanks, 2D and 3D, DBC and mDBC (each SlipMode), 1 s: the lowest fluid
+#             row's pressure against hydrostatic and its height, means over the last 0.1 s
+#   impact    tools/validate.py on cases/dambreak_impact2d (DBC) and _mdbc (SlipMode 1, and 2 and
+#             3 as copies), every resolution, GPU; the reports are tarred into $OUT
+#   cost      SPHERIC Test 2 at dp 0.006 (4.36 M particles): ns/particle/step, DBC against mDBC
+# Usage: tools/device_mdbc.sh still impact cost
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export SEASPRING_SHARED="$root/build-dev/shared"
+bin="$root/build-dev/bin"
+out="${OUT:-/tmp/seaspring_out}"
+work=/tmp/seaspring_mdbc
+mkdir -p "$out" "$work"
+py=/usr/bin/python3
+/usr/bin/python3 -c "import numpy, h5py, matplotlib" 2>/dev/null || py=/opt/torch/.venv/bin/python3
+gpu="$(nvidia-smi --query-gpu=name --format=csv,noheader | head -1)"
+echo "$gpu" >"$out/gpu.txt"
+
+# A tank (2D: 0.4 x 0.3 m; 3D: 0.4 x 0.2 x 0.3 m), water 0.2 m deep, dp 0.01, h = 2 dp, 3 wall
+# layers; with the normals geometry (the inner faces dp/2 inside the first wall row).
+tank_xml() {  # dim params
+    local dim=$1 params=$2 y0=0 y1=0 py0=-1 sy=2
+    [[ $dim == 3 ]] && { y0=-0.05; y1=0.25; py0=0; sy=0.2; }
+    cat <<EOF
+<?xml version="1.0" encoding="UTF-8" ?>
+<case><casedef>
+  <constantsdef><gravity x="0" y="0" z="-9.81" /><rhop0 value="1000" /><hswl value="0" auto="true" />
+    <gamma value="7" /><speedsystem value="0" auto="true" /><coefsound value="20" />
+    <speedsound value="0" auto="true" /><hdp value="2" /><cflnumber value="0.2" /></constantsdef>
+  <mkconfig boundcount="240" fluidcount="9" />
+  <geometry><definition dp="0.01"><pointmin x="-0.05" y="$y0" z="-0.05" /><pointmax x="0.45" y="$y1" z="0.35" /></definition>
+  <commands>
+  <list name="GeometryForNormals">
+    <setactive drawpoints="0" drawshapes="1" /><setshapemode>actual | bound</setshapemode>
+    <setmkbound mk="0" /><setnormalinvert invert="true" />
+    <drawbox><boxfill>bottom | left | right | front | back</boxfill><point x="0" y="$py0" z="0" /><size x="0.4" y="$sy" z="0.3" /><layers vdp="-0.5" /></drawbox>
+    <shapeout file="hdp" /><resetdraw />
+  </list>
+  <mainlist><runlist name="GeometryForNormals" />
+    <setdrawmode mode="full" />
+    <setmkfluid mk="0" /><drawbox><boxfill>solid</boxfill><point x="0" y="$py0" z="0" /><size x="0.4" y="$sy" z="0.2" /></drawbox>
+    <setmkbound mk="0" /><drawbox><boxfill>bottom | left | right | front | back</boxfill><point x="0" y="$py0" z="0" /><size x="0.4" y="$sy" z="0.3" /><layers vdp="0,1,2" /></drawbox>
+  </mainlist></commands></geometry>
+  <normals active="true"><distanceh value="2.0" /><geometryfile file="[CaseName]_hdp_Actual.vtk" /></normals>
+</casedef>
+<execution><parameters>$params
+  <parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="1" />
+  <parameter key="Visco" value="0.01" /><parameter key="DensityDT" value="3" />
+  <parameter key="TimeMax" value="1.0" /><parameter key="TimeOut" value="0.01" />
+</parameters></execution></case>
+EOF
+}
+
+step_still() {
+    local table="$out/still.txt"
+    echo "still-water tank, 1 s, water 0.2 m, dp 0.01, h 2dp, symplectic/Wendland/art 0.01/DDT3; $gpu" >"$table"
+    for dim in 2 3; do
+        for v in "DBC:1:1" "mDBC-slip1:2:1" "mDBC-noslip:2:2" "mDBC-freeslip:2:3"; do
+            IFS=: read -r name b s <<<"$v"
+            local d="$work/still${dim}d_$name"
+            mkdir -p "$d"
+            tank_xml $dim "<parameter key=\"Boundary\" value=\"$b\" /><parameter key=\"SlipMode\" value=\"$s\" />" >"$d/tank_Def.xml"
+            "$bin/gencase" "$d/tank_Def.xml" "$d/tank" >/dev/null || { echo "gencase failed $name" | tee -a "$table"; continue; }
+            "$bin/seaspring" -gpu -sv:h5 -progress:0 "$d/tank" "$d/out" >"$d/log" 2>&1 || { tail -3 "$d/log"; continue; }
+            local np wall
+            np=$(grep -o 'Particles: [0-9]*' "$d/log" | cut -d' ' -f2)
+            wall=$(grep -o 'in [0-9.]* s wall' "$d/log" | cut -d' ' -f2)
+            $py - "$d/out/data" "$dim" "$name" "$np" "$wall" >>"$table" <<'PY'
+import glob, sys, h5py, numpy as np
+d, dim, name, np_, wall = sys.argv[1:]
+ratios, gaps = [], []
+for fn in sorted(glob.glob(d + '/*.h5')):
+    f = h5py.File(fn)
+    t = f['time'][()] if 'time' in f else None
+    pos = f['pos'][:]; p = f['press'][:]; ty = f['type'][:]
+    sel = (ty == 3) & (np.abs(pos[:, 0] - 0.2) <= 0.1)
+    if dim == '3': sel &= np.abs(pos[:, 1] - 0.1) <= 0.05
+    z = pos[sel, 2]; pr = p[sel]
+    low = z < z.min() + 0.005; top = z > z.max() - 0.005
+    zl, zt = z[low].mean(), z[top].mean()
+    ratios.append(pr[low].mean() / (1000 * 9.81 * (zt + 0.005 - zl))); gaps.append((zl - 0.005) / 0.01 - 0.5)
+r, g = np.array(ratios[-10:]), np.array(gaps[-10:])
+print('%sD %-14s np %8s  wall %7s s  lowest row p/hydrostatic %.4f (last 0.1 s: %.4f..%.4f)  offset %+.3f dp' % (dim, name, np_, wall, r.mean(), r.min(), r.max(), g.mean()))
+PY
+        done
+    done
+    cat "$table"
+}
+
+step_impact() {
+    local cases="dambreak_impact2d,dambreak_impact2d_mdbc"
+    for s in 2 3; do
+        local c="$root/cases/dambreak_impact2d_mdbc_slip$s"
+        rm -rf "$c"
+        cp -r "$root/cases/dambreak_impact2d_mdbc" "$c"
+        mv "$c/DambreakImpact2DMdbc_Def.xml" "$c/DambreakImpact2DMdbcSlip${s}_Def.xml"
+        sed -i "s/key=\"SlipMode\" value=\"1\"/key=\"SlipMode\" value=\"$s\"/" "$c/DambreakImpact2DMdbcSlip${s}_Def.xml"
+        sed -i "s/DambreakImpact2DMdbc_Def.xml/DambreakImpact2DMdbcSlip${s}_Def.xml/; s/, mDBC\"/, mDBC SlipMode $s\"/" "$c/validation.json"
+        cases="$cases,dambreak_impact2d_mdbc_slip$s"
+    done
+    $py "$root/tools/validate.py" --cases "$cases" --resolution all --backend gpu \
+        --bin "$bin" --out "$work/val" --report "$work/val/report" 2>&1 | tail -40
+    (cd "$work/val" && tar -czf "$out/impact_report.tgz" report)
+}
+
+step_cost() {
+    local table="$out/cost.txt" x="$work/spheric"
+    mkdir -p "$x"
+    sed -e 's/<normals active="false">/<normals active="true">/' \
+        "$root/build-dev/shared-cases/Spheric2Dam_01M.xml" >"$x/sph_Def.xml"
+    "$bin/gencase" "$x/sph_Def.xml" "$x/sph" -dp:0.006 >"$x/gencase.log" 2>&1 || { tail -5 "$x/gencase.log"; return; }
+    grep -i normals "$x/gencase.log"
+    echo "SPHERIC Test 2, dp 0.006, symplectic/Wendland/art/DDT3, 200 steps; $gpu" >"$table"
+    for round in 1 2; do
+        for b in 1 2; do
+            sed -i "s/key=\"Boundary\" value=\"[12]\"/key=\"Boundary\" value=\"$b\"/" "$x/sph.xml"
+            "$bin/seaspring" -gpu -symplectic -wendland -ddt:3 -nsteps:200 -sv:none -progress:0 "$x/sph" "$x/o$b" >"$x/log$b" 2>&1
+            echo "round $round Boundary=$b: $(grep -E 'Finished' "$x/log$b" | grep -o '[0-9.]* ns/particle/step') $(grep -o 'Particles: [0-9]*' "$x/log$b") $(grep -o 'mDBC: .*' "$x/log$b" | head -1)" | tee -a "$table"
+        done
+    done
+}
+
+for s in "$@"; do "step_$s"; done
