@@ -5,6 +5,7 @@
 #             row's pressure against hydrostatic and its height, means over the last 0.1 s
 #   impact    tools/validate.py on cases/dambreak_impact2d (DBC) and _mdbc (SlipMode 1, and 2 and
 #             3 as copies), every resolution, GPU; the reports are tarred into $OUT
+#   front     the same for cases/dambreak_front2d and _mdbc (the surge front on z = 0.06 and 0.03 m)
 #   cost      SPHERIC Test 2 at dp 0.006 (4.36 M particles): ns/particle/step, DBC against mDBC
 # Usage: tools/device_mdbc.sh still impact cost
 set -uo pipefail
@@ -91,21 +92,25 @@ PY
     cat "$table"
 }
 
-step_impact() {
-    local cases="dambreak_impact2d,dambreak_impact2d_mdbc"
+# validate.py on a DBC case and its mDBC sibling (SlipMode 1; 2 and 3 as copies), every resolution.
+variants() {  # dbc_case mdbc_case report_name
+    local cases="$1,$2" xml
+    xml=$(cd "$root/cases/$2" && ls *_Def.xml | head -1)
     for s in 2 3; do
-        local c="$root/cases/dambreak_impact2d_mdbc_slip$s"
+        local c="$root/cases/$2_slip$s" x="${xml%_Def.xml}Slip${s}_Def.xml"
         rm -rf "$c"
-        cp -r "$root/cases/dambreak_impact2d_mdbc" "$c"
-        mv "$c/DambreakImpact2DMdbc_Def.xml" "$c/DambreakImpact2DMdbcSlip${s}_Def.xml"
-        sed -i "s/key=\"SlipMode\" value=\"1\"/key=\"SlipMode\" value=\"$s\"/" "$c/DambreakImpact2DMdbcSlip${s}_Def.xml"
-        sed -i "s/DambreakImpact2DMdbc_Def.xml/DambreakImpact2DMdbcSlip${s}_Def.xml/; s/, mDBC\"/, mDBC SlipMode $s\"/" "$c/validation.json"
-        cases="$cases,dambreak_impact2d_mdbc_slip$s"
+        cp -r "$root/cases/$2" "$c"
+        mv "$c/$xml" "$c/$x"
+        sed -i "s/key=\"SlipMode\" value=\"1\"/key=\"SlipMode\" value=\"$s\"/" "$c/$x"
+        sed -i "s/$xml/$x/; s/, mDBC\"/, mDBC SlipMode $s\"/" "$c/validation.json"
+        cases="$cases,$2_slip$s"
     done
     $py "$root/tools/validate.py" --cases "$cases" --resolution all --backend gpu \
-        --bin "$bin" --out "$work/val" --report "$work/val/report" 2>&1 | tail -40
-    (cd "$work/val" && tar -czf "$out/impact_report.tgz" report)
+        --bin "$bin" --out "$work/$3" --report "$work/$3/report" 2>&1 | tail -40
+    (cd "$work/$3" && tar -czf "$out/$3_report.tgz" report)
 }
+step_impact() { variants dambreak_impact2d dambreak_impact2d_mdbc impact; }
+step_front() { variants dambreak_front2d dambreak_front2d_mdbc front; }
 
 step_cost() {
     local table="$out/cost.txt" x="$work/spheric"
