@@ -36,6 +36,7 @@
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/neighbour_rows.h"
+#include "physics/mdbc_solid.h"
 #include "physics/particle_updates.h"
 #include "physics/sph_types.h"
 
@@ -247,11 +248,19 @@ struct MdbcInputs {
     const RigidMotionGpu* motions = nullptr;       ///< the current poses
     const std::uint32_t* cell_start_fluid = nullptr;
     const std::uint8_t* near = nullptr;  ///< per cell kNearFluid (null: always search)
+    /// VCPM solids (nsolid = 0: none): their ghost vectors follow the lattice (mdbc_solid.h),
+    /// their wall velocity is the solid's.
+    std::uint32_t first_solid = 0, nsolid = 0;
+    const Double3* solid_pos = nullptr;   ///< current, solid-index order
+    const Double3* solid_pos0 = nullptr;  ///< initial
+    const Double3* solid_vel = nullptr;
+    SolidBonds bonds;
 };
 
 /// Boundary particle i (sorted index): its ghost vector now (a moving boundary rotates its
-/// initial one with its pose), its wall velocity (0, or the motion's over the coming interval,
-/// as motionAt), the sums at the ghost node and the correction. Particles without a ghost
+/// initial one with its pose, a solid particle's follows the lattice's deformation), its wall
+/// velocity (0, the motion's over the coming interval as motionAt, or the solid's), the sums at
+/// the ghost node and the correction. Particles without a ghost
 /// vector keep DBC. The wall acceleration of the pressure cloning is taken as 0.
 template <class Kernel, int kDim>
 SEASPRING_HD inline void mdbcBoundaryAt(std::uint32_t i, const ParticleView& v, const MdbcInputs& in, SlipMode slip,
@@ -262,7 +271,14 @@ SEASPRING_HD inline void mdbcBoundaryAt(std::uint32_t i, const ParticleView& v, 
     Double3 n{double(n0.x), double(n0.y), double(n0.z)};
     float wx = 0.f, wy = 0.f, wz = 0.f;
     const std::uint32_t k = id - in.first_moving;
-    if (id >= in.first_moving && k < in.nmoving) {
+    const std::uint32_t sidx = id - in.first_solid;
+    if (id >= in.first_solid && sidx < in.nsolid) {
+        n = solidGhostVector<kDim>(sidx, n, in.solid_pos, in.solid_pos0, in.bonds);
+        const Double3 u = in.solid_vel[sidx];
+        wx = float(u.x);
+        wy = float(u.y);
+        wz = float(u.z);
+    } else if (id >= in.first_moving && k < in.nmoving) {
         const RigidMotionGpu& mo = in.motions[in.moving_object[k]];
         const double zero[3] = {0.0, 0.0, 0.0};
         n = applyRigid(mo.r, zero, n);

@@ -70,7 +70,10 @@ public:
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
         exec_.prepareSort(np);
         if (!s.solid.empty()) solid_.init(s.solid);
-        if (s.mdbc.enabled) assignFrom(mdbc_normal0_, s.mdbc.normal0);
+        if (s.mdbc.enabled) {
+            assignFrom(mdbc_normal0_, s.mdbc.normal0);
+            if (solid_.n > 0) assignFrom(mdbc_solid_pos0_, s.solid.pos);
+        }
         sortRange(0, nbound_, cs_bound_, true);
         nearFlags(cs_bound_, physics::kNearBound);
         updateSolidSlots();
@@ -248,6 +251,14 @@ private:
         in.motions = motions_.data();
         in.cell_start_fluid = cs_fluid_.data();
         in.near = near_.data();
+        if (solid_.n > 0) {
+            in.first_solid = solid_.first;
+            in.nsolid = solid_.n;
+            in.solid_pos = solid_.pos.data();
+            in.solid_pos0 = mdbc_solid_pos0_.data();
+            in.solid_vel = solid_.vel.data();
+            in.bonds = solid_.bonds();
+        }
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::mdbc(exec_, setup_.mdbc.slip, a, in,
                                                                            setup_.mdbc.constants);
@@ -380,7 +391,8 @@ private:
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
     Buf<physics::Double3> moving_pos0_;
-    Buf<physics::Float4> mdbc_normal0_;  ///< mDBC only: per boundary id
+    Buf<physics::Float4> mdbc_normal0_;      ///< mDBC only: per boundary id
+    Buf<physics::Double3> mdbc_solid_pos0_;  ///< mDBC with solids: their initial positions
     Buf<std::uint16_t> moving_object_;
     Buf<physics::RigidMotionGpu> motions_, solid_motions_;
     SolidArrays<Exec::template Buffer> solid_;

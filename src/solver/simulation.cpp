@@ -88,14 +88,13 @@ static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
     std::uint32_t with = 0;
     for (std::uint32_t id = 0; id < nbound; ++id) {
         const Vec3f n = ps.normal[id];
-        // VCPM solids deform: a fixed initial normal would be wrong, so they keep DBC.
-        if (ps.type[id] == ParticleType::Solid || (n.x == 0.f && n.y == 0.f && n.z == 0.f)) continue;
+        if (n.x == 0.f && n.y == 0.f && n.z == 0.f) continue;
         m.normal0[id] = physics::Float4{n.x, n.y, n.z, 0.f};
         ++with;
     }
     if (with == 0)
         throwInputError(c.h5_path, 0,
-                        "Boundary=2 (mDBC) but no fixed or moving boundary particle has a normal (all of "
+                        "Boundary=2 (mDBC) but no boundary particle has a normal (all of "
                         "/particles/normal is zero): check the <normals> geometry of the case definition");
     m.with_normal = with;
     return m;
@@ -227,8 +226,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     if (setup_.mdbc.enabled)
         log_ << "  mDBC: " << setup_.mdbc.with_normal << " of " << setup_.nbound
              << " boundary particles have a ghost node"
-             << (c.nsolid > 0 ? "; the " + std::to_string(c.nsolid) + " VCPM solid particles keep DBC" : std::string())
-             << "\n";
+             << (c.nsolid > 0 ? " (VCPM solid particles: theirs follow the lattice's deformation)" : "") << "\n";
     if (!setup_.solid.empty()) {
         for (const std::string& l : setup_.solid.body_lines) log_ << "  " << l << "\n";
         log_ << "  VCPM sub-step " << setup_.solid.dt << " s (VcpmDtCoef " << c.params.vcpm_dt_coef

@@ -191,3 +191,85 @@ TEST(MdbcPhysics, AGhostNodeWithoutFluidGivesRho0AndTheWallVelocity) {
         EXPECT_EQ(r.vx, 0.25f);
     }
 }
+
+namespace {
+/// Solid particle 0 of a 2D (x-z) or 3D lattice patch with its first and second neighbours as
+/// bond partners 1..nb, slot-major with n = nb + 1 particles (only particle 0's row is used).
+struct SolidPatch {
+    std::vector<Double3> pos0, pos;
+    std::vector<std::uint8_t> count, flags, broken;
+    std::vector<std::uint32_t> partner;
+    std::vector<double> rest;
+    SolidBonds b;
+    explicit SolidPatch(int dim, double dp = 0.01) {
+        pos0.push_back({0, 0, 0});
+        for (int i = -1; i <= 1; ++i)
+            for (int j = (dim == 3 ? -1 : 0); j <= (dim == 3 ? 1 : 0); ++j)
+                for (int k = -1; k <= 1; ++k)
+                    if (i || j || k) pos0.push_back({i * dp, j * dp, k * dp});
+        const std::uint32_t n = std::uint32_t(pos0.size()), nb = n - 1;
+        count.assign(n, 0);
+        count[0] = std::uint8_t(nb);
+        partner.assign(nb * n, 0);
+        flags.assign(nb * n, 0);
+        broken.assign(nb * n, 0);
+        rest.assign(nb * n, dp);
+        for (std::uint32_t q = 0; q < nb; ++q) partner[q * n + 0] = q + 1;
+        pos = pos0;
+        b.n = n;
+        b.count = count.data();
+        b.partner = partner.data();
+        b.rest = rest.data();
+        b.flags = flags.data();
+        b.broken = broken.data();
+    }
+    template <int kDim>
+    Double3 ghost(const Double3& n0) { return solidGhostVector<kDim>(0, n0, pos.data(), pos0.data(), b); }
+};
+}  // namespace
+
+/// A rigid rotation of the patch rotates the ghost vector with it (exactly, to rounding); a
+/// stretch along x keeps a normal along x and tilts an oblique one as Nanson's formula says
+/// (n ~ F^-T n0); the length is kept; with every bond broken the particle keeps n0.
+/// Broken on purpose: F^-T replaced by F^-1 (B^-1 for B^-T: the rotation check fails, the
+/// normal turns the other way).
+TEST(MdbcPhysics, SolidGhostVectorsFollowTheLattice) {
+    const double th = 0.3, c = std::cos(th), s = std::sin(th);
+    {
+        SolidPatch p(2);
+        for (Double3& x : p.pos) x = Double3{c * x.x + s * x.z, 0.0, -s * x.x + c * x.z};
+        const Double3 n = p.ghost<2>({0.0, 0.0, 0.02});
+        EXPECT_NEAR(n.x, s * 0.02, 1e-12);
+        EXPECT_NEAR(n.z, c * 0.02, 1e-12);
+        EXPECT_EQ(n.y, 0.0);
+    }
+    {
+        SolidPatch p(3);
+        for (Double3& x : p.pos) x = Double3{c * x.x - s * x.y, s * x.x + c * x.y, x.z};  // about z
+        const Double3 n = p.ghost<3>({0.01, 0.0, 0.01});
+        EXPECT_NEAR(n.x, c * 0.01, 1e-12);
+        EXPECT_NEAR(n.y, s * 0.01, 1e-12);
+        EXPECT_NEAR(n.z, 0.01, 1e-12);
+    }
+    {
+        SolidPatch p(2);
+        const double e = 0.25;
+        for (Double3& x : p.pos) x.x *= 1.0 + e;
+        const Double3 nx = p.ghost<2>({0.02, 0.0, 0.0});
+        EXPECT_NEAR(nx.x, 0.02, 1e-12);
+        EXPECT_NEAR(nx.z, 0.0, 1e-12);
+        // n0 = (1, 1): F^-T n0 = (1/(1+e), 1), scaled to |n0|.
+        const Double3 nd = p.ghost<2>({0.01, 0.0, 0.01});
+        const double len = std::sqrt(0.0002), mx = 1.0 / (1.0 + e), ml = std::sqrt(mx * mx + 1.0);
+        EXPECT_NEAR(nd.x, len * mx / ml, 1e-12);
+        EXPECT_NEAR(nd.z, len / ml, 1e-12);
+    }
+    {
+        SolidPatch p(2);
+        for (auto& br : p.broken) br = 1;
+        for (Double3& x : p.pos) x = Double3{c * x.x + s * x.z, 0.0, -s * x.x + c * x.z};
+        const Double3 n = p.ghost<2>({0.0, 0.0, 0.02});
+        EXPECT_EQ(n.x, 0.0);
+        EXPECT_EQ(n.z, 0.02);
+    }
+}
