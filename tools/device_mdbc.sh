@@ -6,6 +6,7 @@
 #   impact    tools/validate.py on cases/dambreak_impact2d (DBC) and _mdbc (SlipMode 1, and 2 and
 #             3 as copies), every resolution, GPU; the reports are tarred into $OUT
 #   front     the same for cases/dambreak_front2d and _mdbc (the surge front on z = 0.06 and 0.03 m)
+#   plate     the same for cases/hydrostatic_plate and _mdbc (mDBC on the deforming plate)
 #   cost      SPHERIC Test 2 at dp 0.006 (4.36 M particles): ns/particle/step, DBC against mDBC
 # Usage: tools/device_mdbc.sh still impact cost
 set -uo pipefail
@@ -111,6 +112,7 @@ variants() {  # dbc_case mdbc_case report_name
 }
 step_impact() { variants dambreak_impact2d dambreak_impact2d_mdbc impact; }
 step_front() { variants dambreak_front2d dambreak_front2d_mdbc front; }
+step_plate() { variants hydrostatic_plate hydrostatic_plate_mdbc plate; }
 
 step_cost() {
     local table="$out/cost.txt" x="$work/spheric"
