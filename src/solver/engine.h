@@ -157,10 +157,19 @@ public:
     void boundaryForces(std::vector<physics::Double3>& out) override {
         out.assign(nbound_, physics::Double3{0, 0, 0});
         if (nbound_ == 0) return;
+        // With mDBC the boundary particles take their ghost nodes' values for this, as in a force
+        // evaluation, and get their state back afterwards: an output does not change the run.
+        Buf<physics::Float4> saved;
+        if (setup_.mdbc.enabled) {
+            saved.resize(nbound_);
+            exec_.copy(saved.data(), p_.velrho.data(), nbound_);
+            mdbc(forceArgs());
+        }
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PressurePass{p_.view(), setup_.fluid});
         Buf<physics::Double3> force;  // output times only
         force.resize(nbound_);
         hydroForces(nullptr, nbound_, force.data());
+        if (setup_.mdbc.enabled) exec_.copy(p_.velrho.data(), saved.data(), nbound_);
         std::vector<physics::Double3> sorted;
         std::vector<std::uint32_t> ids;
         copyToHost(force, sorted);

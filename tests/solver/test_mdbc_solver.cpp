@@ -204,3 +204,23 @@ TEST(MdbcSolver, Boundary2WithoutNormalsOrWithNoPenetrationIsAnError) {
         EXPECT_NE(std::string(e.what()).find("nopen.xml"), std::string::npos) << e.what();
     }
 }
+
+/// A force gauge evaluates mDBC's boundary values for its sums and puts the state back: the run
+/// with the gauge ends with the same state hash as the run without it (the hydrostatic plate with
+/// mDBC on the walls and the deforming plate). Fails without the restore in Engine::boundaryForces.
+TEST(MdbcSolver, ForceGaugesDoNotChangeTheRun) {
+    const std::string dir = scratch("forcegauge");
+    // Gauges at every step, so that one comes between every two steps.
+    const std::string def = test::replaceOnce(
+        test::readFile(test::caseDef("hydrostatic_plate_mdbc/HydrostaticPlateMdbc_Def.xml")),
+        R"(<computedt value="0.0005" />)", R"(<computedt value="0" />)");
+    const std::string gauge = R"(<force name="Plate">
+                    <target mkbound="1" />
+                </force>)";
+    const std::string with = test::generateCase(dir + "/a", "plate", def, 0.025);
+    const std::string without = test::generateCase(dir + "/b", "plate", test::replaceOnce(def, gauge, ""), 0.025);
+    auto steps = [](solver::RunOptions& o) { o.nsteps = 40; };
+    const auto ra = test::runCpu(with, dir + "/outa", 2, steps);
+    const auto rb = test::runCpu(without, dir + "/outb", 2, steps);
+    EXPECT_EQ(ra.summary.state_hash, rb.summary.state_hash);
+}
