@@ -110,7 +110,38 @@ variants() {  # dbc_case mdbc_case report_name
         --bin "$bin" --out "$work/$3" --report "$work/$3/report" 2>&1 | tail -40
     (cd "$work/$3" && tar -czf "$out/$3_report.tgz" report)
 }
-step_impact() { variants dambreak_impact2d dambreak_impact2d_mdbc impact; }
+step_impact() {
+    variants dambreak_impact2d dambreak_impact2d_mdbc impact
+    # The probes 1.5 h off the wall row (the checked ones) and half a kernel off the wall surface
+    # (P*_near), for every case and resolution: window mean and onset against the experiment's
+    # (cases/dambreak_impact2d/validation.json: P1 3220 Pa over 0.62-1.36 s, onset 0.6129 s at
+    # 588.6 Pa; P2 812.7 Pa over 1.11-1.53 s, onset 1.1552 s at 294.3 Pa).
+    $py - "$work/impact" >"$out/impact_probes.txt" <<'PY'
+import csv, glob, os, sys
+import numpy as np
+ref = {'P1': (3220.0, (0.62, 1.36), 0.6129, 588.6, 0.4), 'P2': (812.7, (1.11, 1.53), 1.1552, 294.3, 0.8)}
+for case in sorted(os.listdir(sys.argv[1])):
+    for res in ('coarse', 'medium', 'fine'):
+        d = os.path.join(sys.argv[1], case, res, 'gauges')
+        if not os.path.isdir(d): continue
+        cells = []
+        for g in ('P1', 'P1_near', 'P2', 'P2_near'):
+            f = os.path.join(d, 'GaugesPress_%s.csv' % g)
+            if not os.path.exists(f): cells.append('%s -' % g); continue
+            rows = list(csv.reader(open(f), delimiter=';'))
+            a = np.array([[float(x) for x in r] for r in rows[1:] if r]); h = rows[0]
+            t, p = a[:, 0], a[:, h.index('press')]
+            mean, win, t_on, thr, t_from = ref[g[:2]]
+            w = (t >= win[0]) & (t <= win[1])
+            hit = np.nonzero((p >= thr) & (t >= t_from))[0]
+            on = float('nan')
+            if len(hit):
+                i = hit[0]; on = t[i] if i == 0 else t[i-1] + (t[i] - t[i-1]) * (thr - p[i-1]) / (p[i] - p[i-1])
+            cells.append('%s %+.1f%% %+.3f s' % (g, 100 * (p[w].mean() / mean - 1), on - t_on))
+        print('%-30s %-7s %s' % (case, res, ' | '.join(cells)))
+PY
+    cat "$out/impact_probes.txt"
+}
 step_front() { variants dambreak_front2d dambreak_front2d_mdbc front; }
 step_plate() { variants hydrostatic_plate hydrostatic_plate_mdbc plate; }
 
