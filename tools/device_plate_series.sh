@@ -20,7 +20,7 @@ for dp in 0.025 0.0125 0.00625 0.003125; do
     --csv "$out/plate_mid_dp$dp.csv" 2>/dev/null
   PYTHONPATH=/tmp/site python3 - "$out/plate_mid_dp$dp.csv" "$dp" <<'PY' | tee -a "$out/plate_series.txt"
 import sys, numpy as np
-t, dx, dy, dz = np.loadtxt(sys.argv[1], delimiter=",", skiprows=1, unpack=True)
+t, dx, dy, dz = np.loadtxt(sys.argv[1], delimiter=";", skiprows=1, unpack=True)
 m = (t >= 0.01) & (t <= 0.1)
 w = dz[m].mean()
 print(f"dp {sys.argv[2]}: mean mid-span deflection 0.01-0.1 s {w:.4e} m = {w / -6.860e-5:.4f} x analytic; range {dz[m].min():.3e}..{dz[m].max():.3e}")

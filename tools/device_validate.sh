@@ -88,7 +88,7 @@ try:  # the solid at the last output: every particle finite, largest displacemen
 except Exception as e:
     note += f"; part files: {e}"
 try:  # the energy ledger: largest solid energies over the run, work of the fluid force
-    L = np.genfromtxt(os.path.join(d, "ledger.csv"), delimiter=",", names=True)
+    L = np.genfromtxt(os.path.join(d, "ledger.csv"), delimiter=";", names=True)
     allfin = all(np.isfinite(L[n]).all() for n in L.dtype.names)
     note += (f"; ledger rows {len(L)}, max KE {L['solid_kinetic'].max():.4g} J, max elastic {L['solid_elastic'].max():.4g} J, "
              f"final work {L['work'][-1]:.4g} J, all finite {allfin}")

@@ -6,9 +6,9 @@ Usage: xvfb-run -a pvpython tools/paraview_check.py RUNDIR|RUNDIR/parts.xdmf
 (Debian: paraview python3-paraview xvfb xauth; ParaView 5.11.) It
 - opens parts.xdmf with the XDMF3 reader: the number of time steps must equal the number of
   part files in RUNDIR/data, the last step must have points and the arrays the solver writes
-  (vel rhop press type mk id excluded; disp strain damage broken when there are solids);
+  (vel rhop press type mk id excluded mass; disp strain damage broken when there are solids);
 - opens RUNDIR/vtk/part_*.vtu (when present) with the VTU reader: one file per time step,
-  the same points and arrays (plus mass);
+  the same points and arrays;
 - with --png, renders the last step (or --time): fluid coloured by velocity magnitude, solids
   by displacement magnitude (by damage when bonds broke), walls grey; 2D cases seen along y,
   3D cases cut at mid-width; and checks that the picture is not blank.
@@ -26,7 +26,7 @@ from vtkmodules.numpy_interface import dataset_adapter as dsa
 from vtkmodules.vtkIOImage import vtkPNGReader
 import numpy as np
 
-FLUID_ARRAYS = ("vel", "rhop", "press", "type", "mk", "id", "excluded")
+FLUID_ARRAYS = ("vel", "rhop", "press", "type", "mk", "id", "excluded", "mass")
 SOLID_ARRAYS = ("disp", "strain", "damage", "broken")
 failures = []
 

@@ -2,7 +2,7 @@
 """Displacement history of a solid marker from a seaspring output folder.
 
 The marker is the solid particle (type 2) nearest to POINT in the initial configuration
-(first part file), or the mean of the K nearest with --k. Writes CSV `time_s,dx_m,dy_m,dz_m`
+(first part file), or the mean of the K nearest with --k. Writes CSV `time_s;dx_m;dy_m;dz_m`
 to stdout or --csv, and with --ref-x/--ref-z (CSV files `time_s,displacement_m`) prints the
 peak and RMS error against them.
 
@@ -47,9 +47,9 @@ def main():
             rows.append([f.attrs["time"], *f["disp"][pick].astype(float).mean(axis=0)])
     rows = np.array(rows)
     out = open(a.csv, "w") if a.csv else sys.stdout
-    out.write("time_s,dx_m,dy_m,dz_m\n")
+    out.write("time_s;dx_m;dy_m;dz_m\n")  # ';' as the solver's CSV files
     for r in rows:
-        out.write(f"{r[0]:.6g},{r[1]:.6e},{r[2]:.6e},{r[3]:.6e}\n")
+        out.write(f"{r[0]:.6g};{r[1]:.6e};{r[2]:.6e};{r[3]:.6e}\n")
     if a.csv:
         out.close()
     print(f"marker: {a.k} particle(s) nearest to {a.point}, first at {pos0[pick[0]]}", file=sys.stderr)

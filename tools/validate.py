@@ -8,8 +8,8 @@ order and error against wall time; REPORT/<case>.md + .json and REPORT/README.md
 case). Exit status 1 when a case fails. Schema and details: docs/validation.md.
 
 Examples:
-  /usr/bin/python3 tools/validate.py --ci --backend cpu --out out/validation --report out/validation/report
-  /usr/bin/python3 tools/validate.py --all --resolution all --backend gpu --paraview
+  /usr/bin/python3 tools/validate.py --ci --backend cpu --out out/validation    # report in out/validation/report
+  /usr/bin/python3 tools/validate.py --all --resolution all --backend gpu --paraview --report docs/validation
 Needs numpy, h5py, matplotlib (Debian python3-numpy python3-h5py python3-matplotlib: run with
 /usr/bin/python3 where another python3 comes first on PATH).
 """
@@ -47,8 +47,8 @@ def parse(argv):
                     help="seaspring -cpu or -gpu (auto: the solver's choice, the GPU when usable)")
     ap.add_argument("--threads", type=int, help="OpenMP threads for -cpu (default: all cores)")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "validation"), help="run folders (default out/validation)")
-    ap.add_argument("--report", default=os.path.join(ROOT, "docs", "validation"),
-                    help="report folder (default docs/validation)")
+    ap.add_argument("--report", help="report folder (default OUT/report; the committed results are "
+                                      "updated only with an explicit --report docs/validation)")
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"), help="folder of gencase and seaspring")
     ap.add_argument("--cases-dir", default=os.path.join(ROOT, "cases"), help=argparse.SUPPRESS)
     ap.add_argument("--timeout", type=float, default=3600, help="limit per gencase/seaspring call [s]")
@@ -61,6 +61,8 @@ def parse(argv):
                     help="run (or --reuse) the first --resolution with VTU output and only add the ParaView "
                          "picture to the existing REPORT/<case>.json/.md (e.g. a CPU picture for GPU results)")
     a = ap.parse_args(argv)
+    if a.report is None:  # never docs/validation by default: a plain run must not overwrite committed results
+        a.report = os.path.join(a.out, "report")
     if a.resolution == "all":
         a.resolutions = list(RESOLUTIONS)
     else:

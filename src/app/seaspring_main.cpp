@@ -2,7 +2,9 @@
 /// \file seaspring_main.cpp
 /// \brief The solver: `seaspring [options] OUTDIR/NAME OUTDIR` (DualSPHysics habits).
 ///
-/// Exit codes: 0 success, 2 bad input or command line, 1 run-time failure.
+/// Exit codes: 0 success, 2 bad input or command line, 1 run-time failure. Everything printed
+/// once OUTDIR is known (the banner, the run's lines, the summary, errors) also goes to
+/// OUTDIR/Run.out (solver/run_log.h).
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -12,6 +14,7 @@
 #include "core/version.h"
 #include "solver/backend.h"
 #include "solver/run_options.h"
+#include "solver/run_log.h"
 #include "solver/run_report.h"
 #include "solver/simulation.h"
 #include "solver/solver_case.h"
@@ -34,6 +37,14 @@ int main(int argc, char** argv) {
         std::cout << "seaspring " << kVersion << "\n";
         return 0;
     }
+    std::unique_ptr<solver::RunLog> run_log;
+    try {
+        run_log = std::make_unique<solver::RunLog>(opt.outdir, std::cout);
+    } catch (const std::exception& e) {
+        std::cerr << "seaspring: " << e.what() << "\n";
+        return 2;
+    }
+    std::ostream& log = run_log->out();
     std::unique_ptr<solver::Simulation> sim;
     solver::SolverCase c;
     try {
@@ -47,39 +58,41 @@ int main(int argc, char** argv) {
         if (opt.backend != solver::RunOptions::Backend::Cpu) {
             backend = solver::makeCudaBackend(opt.gpu_id, why);
             if (!backend && opt.backend == solver::RunOptions::Backend::Gpu) {
-                std::cerr << "seaspring: -gpu requested but " << why << "\n";
+                run_log->error(std::cerr, "seaspring: -gpu requested but " + why + "\n");
                 return 2;
             }
-            if (!backend && !opt.quiet) std::cout << "GPU not used: " << why << "; running on the CPU\n";
+            if (!backend && !opt.quiet) log << "GPU not used: " << why << "; running on the CPU\n";
         }
         if (!backend) backend = solver::makeCpuBackend(opt.threads);
 
         if (!opt.quiet) {
-            std::cout << "SeaSpring " << kVersion << " - case " << c.name << " (" << c.xml_path << ")\n";
-            for (const std::string& l : solver::describeCase(c)) std::cout << "  " << l << "\n";
-            std::cout << "  physics: "
-                      << solver::describePhysics(c.params, c.constants.dimensions,
-                                                       solver::resolveCellDiv(c, opt.cell_div), solver::resolveSkin(opt))
-                      << "\n";
-            std::cout << "  backend: " << backend->name() << " (" << backend->deviceName() << ")";
-            if (backend->name() == "cpu") std::cout << ", " << backend->threads() << " threads";
-            std::cout << "\n  TimeMax " << c.params.time_max << " s, TimeOut " << c.params.time_out
-                      << " s, output in " << opt.outdir << "\n";
+            log << "SeaSpring " << kVersion << " - case " << c.name << " (" << c.xml_path << ")\n";
+            for (const std::string& l : solver::describeCase(c)) log << "  " << l << "\n";
+            log << "  physics: "
+                << solver::describePhysics(c.params, c.constants.dimensions, solver::resolveCellDiv(c, opt.cell_div),
+                                           solver::resolveSkin(opt))
+                << "\n";
+            log << "  backend: " << backend->name() << " (" << backend->deviceName() << ")";
+            if (backend->name() == "cpu") log << ", " << backend->threads() << " threads";
+            log << "\n  TimeMax " << c.params.time_max << " s, TimeOut " << c.params.time_out << " s, output in "
+                << opt.outdir << "\n";
         }
-        sim = std::make_unique<solver::Simulation>(c, opt, std::move(backend), std::cout);
+        sim = std::make_unique<solver::Simulation>(c, opt, std::move(backend), log);
     } catch (const std::exception& e) {
-        std::cerr << "seaspring: " << e.what() << "\n";
+        run_log->error(std::cerr, std::string("seaspring: ") + e.what() + "\n");
         return 2;
     }
     try {
         const solver::RunSummary s = sim->run();
         const std::string json = (std::filesystem::path(opt.outdir) / "run.json").string();
         solver::writeRunJson(json, s);
-        solver::printSummary(std::cout, s);
-        if (!opt.quiet) std::cout << "Output: " << opt.outdir << "/parts.xdmf (ParaView), " << json << "\n";
+        solver::printSummary(log, s);
+        if (!opt.quiet)
+            log << "Output: " << opt.outdir << "/parts.xdmf (ParaView), " << json << ", " << run_log->path() << "\n";
+        log.flush();
         return 0;
     } catch (const std::exception& e) {
-        std::cerr << "seaspring: error: " << e.what() << "\n";
+        run_log->error(std::cerr, std::string("seaspring: error: ") + e.what() + "\n");
         return 1;
     }
 }

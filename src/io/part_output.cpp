@@ -41,6 +41,7 @@ void writeContents(const std::string& path, const PartFrame& f) {
     h5::writeDataset<std::uint8_t>(file, "type", f.type, f.np, 1, contiguous);
     h5::writeDataset<std::uint16_t>(file, "mk", f.mk, f.np, 1, contiguous);
     h5::writeDataset<std::uint8_t>(file, "excluded", f.excluded, f.np, 1, contiguous);
+    h5::writeDataset<float>(file, "mass", f.mass, f.np, 1, contiguous);
     if (f.disp) {
         h5::writeDataset<float>(file, "disp", f.disp, f.np, 3, contiguous);
         h5::writeDataset<float>(file, "strain", f.strain, f.np, 1, contiguous);
@@ -52,6 +53,11 @@ void writeContents(const std::string& path, const PartFrame& f) {
     h5::writeInt64Attribute(file, "np", static_cast<std::int64_t>(f.np));
     h5::writeStringAttribute(file, "format", kPartFormat);
     h5::writeInt64Attribute(file, "format_version", kPartFormatVersion);
+    h5::writeDoubleAttribute(file, "h", f.constants.h);
+    h5::writeDoubleAttribute(file, "dp", f.constants.dp);
+    h5::writeStringAttribute(file, "kernel", f.constants.kernel);
+    h5::writeDoubleAttribute(file, "rhop0", f.constants.rhop0);
+    h5::writeInt64Attribute(file, "dimension", f.constants.dimension);
     file.close();
 }
 
@@ -100,9 +106,9 @@ PartData readPartH5(const std::string& path) {
         file.fail("attribute 'format' of /",
                   "is \"" + format + "\", expected \"" + kPartFormat + "\"");
     const std::int64_t version = h5::readInt64Attribute(file, "format_version");
-    if (version != kPartFormatVersion)
+    if (version != 1 && version != kPartFormatVersion)
         file.fail("attribute 'format_version' of /",
-                  "is " + std::to_string(version) + ", this code reads version " +
+                  "is " + std::to_string(version) + ", this code reads versions 1 to " +
                       std::to_string(kPartFormatVersion));
     const std::int64_t np_attr = h5::readInt64Attribute(file, "np");
     if (np_attr < 0) file.fail("attribute 'np' of /", "is negative: " + std::to_string(np_attr));
@@ -128,6 +134,15 @@ PartData readPartH5(const std::string& path) {
     h5::readDatasetInto<std::uint8_t>(file, "type", d.type.data(), np, 1);
     h5::readDatasetInto<std::uint16_t>(file, "mk", d.mk.data(), np, 1);
     h5::readDatasetInto<std::uint8_t>(file, "excluded", d.excluded.data(), np, 1);
+    if (version >= 2) {
+        d.mass.resize(np);
+        h5::readDatasetInto<float>(file, "mass", d.mass.data(), np, 1);
+        d.constants.h = h5::readDoubleAttribute(file, "h");
+        d.constants.dp = h5::readDoubleAttribute(file, "dp");
+        d.constants.kernel = h5::readStringAttribute(file, "kernel");
+        d.constants.rhop0 = h5::readDoubleAttribute(file, "rhop0");
+        d.constants.dimension = int(h5::readInt64Attribute(file, "dimension"));
+    }
     if (file.hasChild("disp")) {
         d.disp.resize(3 * np);
         d.strain.resize(np);

@@ -28,7 +28,7 @@ constexpr AttributeSpec kAttributes[] = {
     {"vel", "Vector", "Float", 4, 3},   {"rhop", "Scalar", "Float", 4, 1},
     {"press", "Scalar", "Float", 4, 1}, {"type", "Scalar", "UChar", 1, 1},
     {"mk", "Scalar", "UInt", 2, 1},     {"id", "Scalar", "UInt", 4, 1},
-    {"excluded", "Scalar", "UChar", 1, 1},
+    {"excluded", "Scalar", "UChar", 1, 1}, {"mass", "Scalar", "Float", 4, 1},
 };
 /// The solid fields (cases with VCPM solids).
 constexpr AttributeSpec kSolidAttributes[] = {

@@ -7,7 +7,8 @@
 /// each frame is a Uniform grid with its Time, a Polyvertex topology (one vertex per
 /// particle, excluded ones included), XYZ geometry from "FILE:/pos", and node attributes
 /// vel (Vector, Float 4), rhop and press (Scalar, Float 4), type (UChar 1), mk (UInt 2),
-/// id (UInt 4) and excluded (UChar 1) — the element types of the part file (part_output.h);
+/// id (UInt 4), excluded (UChar 1) and mass (Scalar, Float 4: ParaView's SPH filters take
+/// it as their mass array) — the element types of the part file (part_output.h);
 /// with VCPM solids also disp (Vector, Float 4), strain (Float 4), broken (UChar 1) and
 /// damage (Float 4).
 /// HDF5 paths are written as given, relative to the folder of parts.xdmf, so that an output

@@ -81,15 +81,15 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
 LedgerFile::LedgerFile(const std::string& outdir)
     : path_((std::filesystem::path(outdir) / "ledger.csv").string()), f_(path_) {
     if (!f_) throw Error(path_ + ": cannot create the coupling ledger");
-    f_ << "time,fluid_px,fluid_py,fluid_pz,solid_px,solid_py,solid_pz,force_x,force_y,force_z,"
-          "impulse_x,impulse_y,impulse_z,work,solid_kinetic,solid_elastic,solid_potential,fluid_kinetic,"
-          "wall_fx,wall_fy,wall_fz\n";
+    f_ << "time;fluid_px;fluid_py;fluid_pz;solid_px;solid_py;solid_pz;force_x;force_y;force_z;"
+          "impulse_x;impulse_y;impulse_z;work;solid_kinetic;solid_elastic;solid_potential;fluid_kinetic;"
+          "wall_fx;wall_fy;wall_fz\n";
 }
 
 void LedgerFile::add(const LedgerRow& r) {
     char line[768];
     std::snprintf(line, sizeof line,
-                  "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
+                  "%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;%.9g;"
                   "%.9g\n",
                   r.time, r.fluid_momentum.x, r.fluid_momentum.y, r.fluid_momentum.z, r.solid_momentum.x,
                   r.solid_momentum.y, r.solid_momentum.z, r.fluid_force.x, r.fluid_force.y, r.fluid_force.z,

@@ -36,7 +36,8 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
                     std::uint32_t first_fluid, double fluid_mass, const physics::Double3& gravity,
                     const std::vector<physics::Double3>& boundary_force);
 
-/// Appends rows to OUTDIR/ledger.csv (header on creation).
+/// Appends rows to OUTDIR/ledger.csv (header on creation), separated by ';' as the gauge files
+/// and DualSPHysics' CSV files are.
 class LedgerFile {
 public:
     explicit LedgerFile(const std::string& outdir);

@@ -312,6 +312,15 @@ json.dump({{"wall_time_s": 1e-3 / dp, "particles": {{"total": int(1 / dp)}}, "de
 """
 
 
+class CommandLine(unittest.TestCase):
+    def test_the_report_goes_under_out_unless_given(self):
+        a = validate.parse([])
+        self.assertEqual(a.report, os.path.join(a.out, "report"))
+        self.assertFalse(os.path.abspath(a.report).startswith(os.path.join(ROOT, "docs")), a.report)
+        self.assertEqual(validate.parse(["--out", "/tmp/v"]).report, os.path.join("/tmp/v", "report"))
+        self.assertEqual(validate.parse(["--out", "/tmp/v", "--report", "/tmp/r"]).report, "/tmp/r")
+
+
 class WholeRun(unittest.TestCase):
     """tools/validate.py with stand-in binaries: dispx = (1 + dp²) after 0.1 s, so its mean
     against the analytic 1 has error dp², order 2."""

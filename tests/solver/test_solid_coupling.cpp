@@ -319,12 +319,12 @@ std::vector<double> csvColumn(const std::string& text, const std::string& name) 
     std::string line, cell;
     std::getline(in, line);
     int col = -1, k = 0;
-    for (std::istringstream h(line); std::getline(h, cell, ','); ++k)
+    for (std::istringstream h(line); std::getline(h, cell, ';'); ++k)
         if (cell == name) col = k;
     std::vector<double> v;
     while (col >= 0 && std::getline(in, line)) {
         std::istringstream r(line);
-        for (int i = 0; i <= col; ++i) std::getline(r, cell, ',');
+        for (int i = 0; i <= col; ++i) std::getline(r, cell, ';');
         v.push_back(std::stod(cell));
     }
     return v;

@@ -192,7 +192,7 @@ TEST(SolidLoads, LedgerWallsAndPlateCarryTheWaterWeight) {
     std::string line;
     std::getline(in, line);
     std::vector<std::string> names;
-    for (std::istringstream h(line); std::getline(h, line, ',');) names.push_back(line);
+    for (std::istringstream h(line); std::getline(h, line, ';');) names.push_back(line);
     auto column = [&](const std::string& n) { return std::size_t(std::find(names.begin(), names.end(), n) - names.begin()); };
     const std::size_t ct = column("time"), cp = column("force_z"), cw = column("wall_fz"), cx = column("wall_fx");
     ASSERT_LT(cx, names.size());
@@ -201,7 +201,7 @@ TEST(SolidLoads, LedgerWallsAndPlateCarryTheWaterWeight) {
     while (std::getline(in, line)) {
         std::vector<double> v;
         std::string cell;
-        for (std::istringstream s(line); std::getline(s, cell, ',');) v.push_back(std::stod(cell));
+        for (std::istringstream s(line); std::getline(s, cell, ';');) v.push_back(std::stod(cell));
         if (v[ct] < 0.01) continue;
         plate += v[cp];
         walls += v[cw];

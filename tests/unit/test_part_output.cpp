@@ -1,7 +1,8 @@
 // SeaSpring — MIT licence.
 /// \file test_part_output.cpp
-/// \brief The solver's output files: part_NNNN.h5 round trips, layout and error paths, and the
-///        XDMF series parts.xdmf (well-formed, counts, times, paths, types matching the HDF5).
+/// \brief The solver's output files: part_NNNN.h5 round trips, layout and error paths, the
+///        particle masses and case constants for ParaView's SPH filters, and the XDMF series
+///        parts.xdmf (well-formed, counts, times, paths, types matching the HDF5).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <pugixml.hpp>
@@ -60,10 +61,11 @@ struct Scratch {
 /// Particle arrays that own the memory a PartFrame points into.
 struct Particles {
     std::vector<double> pos;
-    std::vector<float> vel, rhop, press;
+    std::vector<float> vel, rhop, press, mass;
     std::vector<std::uint32_t> id;
     std::vector<std::uint8_t> type, excluded;
     std::vector<std::uint16_t> mk;
+    PartConstants constants;
 
     PartFrame frame(int index, double time, long long step) const {
         PartFrame f;
@@ -79,6 +81,8 @@ struct Particles {
         f.type = type.data();
         f.mk = mk.data();
         f.excluded = excluded.data();
+        f.mass = mass.data();
+        f.constants = constants;
         return f;
     }
 };
@@ -102,6 +106,8 @@ Particles makeParticles() {
     p.type = {0, 1, 2, 3, 255};
     p.mk = {1, 12, 13, 14, 0xFFFF};
     p.excluded = {0, 0, 3, 1, 2};
+    p.mass = {6.14125e-4f, 6.14125e-4f, 1.6e-3f, 6.0e-4f, fdenorm};  // walls, solid, fluid, odd
+    p.constants = {0.0147224, 0.0085, "Wendland C2", 1000.0, 3};
     return p;
 }
 
@@ -127,6 +133,7 @@ TEST(PartOutput, RoundTripIsByteExact) {
     EXPECT_EQ(d.type, p.type);
     EXPECT_EQ(d.mk, p.mk);
     EXPECT_EQ(d.excluded, p.excluded);
+    EXPECT_TRUE(sameBytes(d.mass, p.mass));
 }
 
 TEST(PartOutput, FileNamesHaveAtLeastFourDigits) {
@@ -151,11 +158,11 @@ H5D_layout_t layoutOf(const h5::File& file, const char* name) {
 void expectLayout(const std::string& path, std::size_t np) {
     h5::File file = h5::File::openReadOnly(path);
     EXPECT_EQ(h5::readStringAttribute(file, "format"), "SeaSpring part");
-    EXPECT_EQ(h5::readInt64Attribute(file, "format_version"), 1);
+    EXPECT_EQ(h5::readInt64Attribute(file, "format_version"), 2);
     EXPECT_EQ(h5::readInt64Attribute(file, "np"), static_cast<std::int64_t>(np));
     const std::map<std::string, std::size_t> cols = {{"pos", 3}, {"vel", 3}, {"rhop", 1},
                                                      {"press", 1}, {"id", 1}, {"type", 1},
-                                                     {"mk", 1}, {"excluded", 1}};
+                                                     {"mk", 1}, {"excluded", 1}, {"mass", 1}};
     for (const auto& [name, c] : cols) {
         const h5::DatasetShape s = h5::datasetShape(file, name);
         EXPECT_EQ(s.rank, c == 1 ? 1 : 2) << name;
@@ -189,7 +196,54 @@ TEST(PartOutput, ZeroParticlesWithoutArrays) {
     EXPECT_EQ(d.time, 2.5);
     EXPECT_EQ(d.step, 10);
     EXPECT_TRUE(d.pos.empty() && d.vel.empty() && d.rhop.empty() && d.press.empty());
-    EXPECT_TRUE(d.type.empty() && d.mk.empty() && d.excluded.empty());
+    EXPECT_TRUE(d.type.empty() && d.mk.empty() && d.excluded.empty() && d.mass.empty());
+}
+
+TEST(PartOutput, MassAndCaseConstantsForParaViewsSphFilters) {
+    // A 2D case: walls, solid and fluid have different masses (massbound, rho_S dp^2, massfluid).
+    const Scratch scratch;
+    const std::string& dir = scratch.dir;
+    Particles p = makeParticles();
+    p.type = {0, 0, 2, 3, 3};
+    p.mass = {2.5e-3f, 2.5e-3f, 6.75e-3f, 2.4e-3f, 2.4e-3f};
+    p.constants = {0.0070711, 0.005, "cubic spline", 998.5, 2};
+    const std::string path = (fs::path(dir) / writePartH5(dir, p.frame(2, 0.25, 40))).string();
+    {  // as ParaView and h5py see them: a float32 dataset [np] and scalar root attributes
+        h5::File file = h5::File::openReadOnly(path);
+        EXPECT_EQ(h5::datasetShape(file, "mass").rank, 1);
+        EXPECT_EQ(h5::readDataset<float>(file, "mass"), p.mass);
+        EXPECT_EQ(h5::readDoubleAttribute(file, "h"), 0.0070711);
+        EXPECT_EQ(h5::readDoubleAttribute(file, "dp"), 0.005);
+        EXPECT_EQ(h5::readStringAttribute(file, "kernel"), "cubic spline");
+        EXPECT_EQ(h5::readDoubleAttribute(file, "rhop0"), 998.5);
+        EXPECT_EQ(h5::readInt64Attribute(file, "dimension"), 2);
+    }
+    const PartData d = readPartH5(path);
+    EXPECT_EQ(d.mass, p.mass);
+    EXPECT_NE(d.mass[0], d.mass[3]);  // boundary and fluid
+    EXPECT_EQ(d.constants.h, 0.0070711);
+    EXPECT_EQ(d.constants.dp, 0.005);
+    EXPECT_EQ(d.constants.kernel, "cubic spline");
+    EXPECT_EQ(d.constants.rhop0, 998.5);
+    EXPECT_EQ(d.constants.dimension, 2);
+
+    // A frame without masses is refused like any other missing array.
+    PartFrame f = p.frame(3, 0.5, 80);
+    f.mass = nullptr;
+    EXPECT_HAS(errorOf([&] { writePartH5(dir, f); }), "dataset /mass: no data given for 5 rows");
+
+    // A version 1 file (before /mass and the constants) still reads, without them.
+    {
+        h5::File file = h5::File::openReadWrite(path);
+        h5::writeInt64Attribute(file, "format_version", 1);
+        file.removeChild("mass");
+        file.close();
+    }
+    const PartData old = readPartH5(path);
+    EXPECT_EQ(old.mk, p.mk);
+    EXPECT_TRUE(old.mass.empty());
+    EXPECT_EQ(old.constants.h, 0.0);
+    EXPECT_EQ(old.constants.kernel, "");
 }
 
 TEST(PartOutput, RewritingAnIndexReplacesTheFile) {
@@ -261,13 +315,13 @@ TEST(PartOutput, ReaderRejectsOtherFilesAndBrokenShapes) {
     {
         h5::File file = h5::File::openReadWrite(path);
         h5::writeStringAttribute(file, "format", "SeaSpring part");
-        h5::writeInt64Attribute(file, "format_version", 2);
+        h5::writeInt64Attribute(file, "format_version", 3);
         file.close();
     }
-    EXPECT_HAS(errorOf([&] { readPartH5(path); }), "'format_version' of /: is 2");
+    EXPECT_HAS(errorOf([&] { readPartH5(path); }), "'format_version' of /: is 3, this code reads versions 1 to 2");
     {
         h5::File file = h5::File::openReadWrite(path);
-        h5::writeInt64Attribute(file, "format_version", 1);
+        h5::writeInt64Attribute(file, "format_version", 2);
         file.removeChild("press");
         const std::vector<float> short_press = {1.0f, 2.0f};
         h5::writeDataset(file, "press", short_press);
@@ -352,7 +406,7 @@ void expectSeries(const std::string& path, const std::vector<FrameInfo>& frames)
             EXPECT_EQ(std::string(item.child_value()), want.file + ":/" + names.back());
         }
         EXPECT_EQ(names, (std::vector<std::string>{"vel", "rhop", "press", "type", "mk", "id",
-                                                   "excluded"}));
+                                                   "excluded", "mass"}));
     }
     EXPECT_EQ(n, frames.size());
 }
@@ -421,7 +475,7 @@ TEST(XdmfSeries, NumberTypesMatchThePartFile) {
         H5Dclose(set);
         ++checked;
     }
-    EXPECT_EQ(checked, 9);  // the connectivity (/id), pos + 7 attributes
+    EXPECT_EQ(checked, 10);  // the connectivity (/id), pos + 8 attributes
 }
 
 TEST(XdmfSeries, SpecialCharactersInPathsAreEscaped) {
