@@ -7,6 +7,7 @@
 #             3 as copies), every resolution, GPU; the reports are tarred into $OUT
 #   front     the same for cases/dambreak_front2d and _mdbc (the surge front on z = 0.06 and 0.03 m)
 #   plate     the same for cases/hydrostatic_plate and _mdbc (mDBC on the deforming plate)
+#   gate      the same for cases/antoci_gate2d and _mdbc (mDBC on the rubber gate)
 #   cost      SPHERIC Test 2 at dp 0.006 (4.36 M particles): ns/particle/step, DBC against mDBC
 # Usage: tools/device_mdbc.sh still impact cost
 set -uo pipefail
@@ -144,6 +145,7 @@ PY
 }
 step_front() { variants dambreak_front2d dambreak_front2d_mdbc front; }
 step_plate() { variants hydrostatic_plate hydrostatic_plate_mdbc plate; }
+step_gate() { variants antoci_gate2d antoci_gate2d_mdbc gate; }
 
 step_cost() {
     local table="$out/cost.txt" x="$work/spheric"
