@@ -289,10 +289,16 @@ SEASPRING_HD inline void mdbcBoundaryAt(std::uint32_t i, const ParticleView& v, 
         wz = float((b.z - a.z) * mo.inv_dt);
     }
     const Double3 p = v.pos[i];
+    const Double3 gp{p.x + n.x, p.y + n.y, p.z + n.z};
     std::uint32_t lin;
-    const Float4 gpc = makePosCell(g, Double3{p.x + n.x, p.y + n.y, p.z + n.z}, lin);
-    MdbcSums s;  // no fluid in reach of the node's cell: the empty sums, without the search
-    if (in.near == nullptr || (in.near[lin] & kNearFluid) != 0)
+    const Float4 gpc = makePosCell(g, gp, lin);
+    // A node outside the grid (normals pointing out of the domain) has no fluid around it, as a
+    // gauge point outside the domain; no fluid in reach of the node's cell: the empty sums too.
+    const bool inside = gp.x >= g.minx && gp.x < g.minx + double(g.ncx) * g.cellsize && gp.z >= g.minz &&
+                        gp.z < g.minz + double(g.ncz) * g.cellsize &&
+                        (kDim == 2 || (gp.y >= g.miny && gp.y < g.miny + double(g.ncy) * g.cellsize));
+    MdbcSums s;
+    if (inside && (in.near == nullptr || (in.near[lin] & kNearFluid) != 0))
         s = mdbcGhostSums<Kernel, kDim>(gpc, in.cell_start_fluid, v.poscell, v.velrho, c, g);
     const MdbcResult res =
         mdbcCorrect<kDim>(s, slip, float(n.x), float(n.y), float(n.z), wx, wy, wz, 0.f, 0.f, 0.f, c, m);
