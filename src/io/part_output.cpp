@@ -58,6 +58,7 @@ void writeContents(const std::string& path, const PartFrame& f) {
     h5::writeStringAttribute(file, "kernel", f.constants.kernel);
     h5::writeDoubleAttribute(file, "rhop0", f.constants.rhop0);
     h5::writeInt64Attribute(file, "dimension", f.constants.dimension);
+    h5::writeDoubleAttribute(file, "b", f.constants.b);
     file.close();
 }
 
@@ -142,6 +143,7 @@ PartData readPartH5(const std::string& path) {
         d.constants.kernel = h5::readStringAttribute(file, "kernel");
         d.constants.rhop0 = h5::readDoubleAttribute(file, "rhop0");
         d.constants.dimension = int(h5::readInt64Attribute(file, "dimension"));
+        d.constants.b = h5::readDoubleAttribute(file, "b");
     }
     if (file.hasChild("disp")) {
         d.disp.resize(3 * np);

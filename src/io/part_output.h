@@ -20,7 +20,7 @@
 ///                    format (string), format_version (int64), and the case constants that
 ///                    ParaView's SPH filters ask for: h (float64, smoothing length [m]), dp
 ///                    (float64 [m]), kernel (string: "Wendland C2" or "cubic spline"; both
-///                    reach 2h), rhop0 (float64 [kg/m^3]), dimension (int64, 2 or 3)
+///                    reach 2h), rhop0 (float64 [kg/m^3]), dimension (int64, 2 or 3), b (float64, Tait B [Pa])
 /// Version 1 (before /mass and the case constants) is still read: mass is then empty.
 /// np = 0 is valid (empty datasets). The file is written as "part_NNNN.h5.tmp" and renamed
 /// when complete, so a crash never leaves a half-written part_NNNN.h5.
@@ -45,6 +45,7 @@ struct PartConstants {
     std::string kernel;      ///< "Wendland C2" or "cubic spline"
     double rhop0 = 0;        ///< reference density [kg/m^3]
     int dimension = 3;       ///< 2 or 3
+    double b = 0;            ///< Tait B [Pa] (the solver's pressure is Tait(rhop) with float(b))
 };
 
 /// One output time; particles in id order (array index = particle id). The arrays are
@@ -63,7 +64,7 @@ struct PartFrame {
     const std::uint16_t* mk = nullptr;       ///< np
     const std::uint8_t* excluded = nullptr;  ///< np, 0 = active, >0 = excluded (reason code)
     const float* mass = nullptr;             ///< np [kg]
-    PartConstants constants;                 ///< root attributes h, dp, kernel, rhop0, dimension
+    PartConstants constants;                 ///< root attributes h, dp, kernel, rhop0, dimension, b
     // Solid fields: all three or none (cases without VCPM solids).
     const float* disp = nullptr;             ///< 3*np [m]
     const float* strain = nullptr;           ///< np

@@ -293,7 +293,7 @@ void Simulation::output(double time, long long step) {
         f.excluded = st.excl.data();
         f.mass = case_.particles.mass.data();
         f.constants = {case_.constants.h, case_.constants.dp, kernelName(case_.params.kernel),
-                       case_.constants.rhop0, case_.constants.dimensions};
+                       case_.constants.rhop0, case_.constants.dimensions, case_.constants.b};
         const std::string rel = io::writePartH5(opt_.outdir, f);
         out_->xdmf.add(rel, time, np, !disp.empty());
     }

@@ -107,7 +107,7 @@ Particles makeParticles() {
     p.mk = {1, 12, 13, 14, 0xFFFF};
     p.excluded = {0, 0, 3, 1, 2};
     p.mass = {6.14125e-4f, 6.14125e-4f, 1.6e-3f, 6.0e-4f, fdenorm};  // walls, solid, fluid, odd
-    p.constants = {0.0147224, 0.0085, "Wendland C2", 1000.0, 3};
+    p.constants = {0.0147224, 0.0085, "Wendland C2", 1000.0, 3, 162005.0};
     return p;
 }
 
@@ -206,7 +206,7 @@ TEST(PartOutput, MassAndCaseConstantsForParaViewsSphFilters) {
     Particles p = makeParticles();
     p.type = {0, 0, 2, 3, 3};
     p.mass = {2.5e-3f, 2.5e-3f, 6.75e-3f, 2.4e-3f, 2.4e-3f};
-    p.constants = {0.0070711, 0.005, "cubic spline", 998.5, 2};
+    p.constants = {0.0070711, 0.005, "cubic spline", 998.5, 2, 161234.5};
     const std::string path = (fs::path(dir) / writePartH5(dir, p.frame(2, 0.25, 40))).string();
     {  // as ParaView and h5py see them: a float32 dataset [np] and scalar root attributes
         h5::File file = h5::File::openReadOnly(path);
@@ -226,6 +226,7 @@ TEST(PartOutput, MassAndCaseConstantsForParaViewsSphFilters) {
     EXPECT_EQ(d.constants.kernel, "cubic spline");
     EXPECT_EQ(d.constants.rhop0, 998.5);
     EXPECT_EQ(d.constants.dimension, 2);
+    EXPECT_EQ(d.constants.b, 161234.5);
 
     // A frame without masses is refused like any other missing array.
     PartFrame f = p.frame(3, 0.5, 80);
