@@ -8,6 +8,7 @@
 #   front     the same for cases/dambreak_front2d and _mdbc (the surge front on z = 0.06 and 0.03 m)
 #   plate     the same for cases/hydrostatic_plate and _mdbc (mDBC on the deforming plate)
 #   gate      the same for cases/antoci_gate2d and _mdbc (mDBC on the rubber gate)
+#   parity    state hashes of cpu 1 and 2 threads and gpu on the mDBC cases
 #   cost      SPHERIC Test 2 at dp 0.006 (4.36 M particles): ns/particle/step, DBC against mDBC
 # Usage: tools/device_mdbc.sh still impact cost
 set -uo pipefail
@@ -146,6 +147,31 @@ PY
 step_front() { variants dambreak_front2d dambreak_front2d_mdbc front; }
 step_plate() { variants hydrostatic_plate hydrostatic_plate_mdbc plate; }
 step_gate() { variants antoci_gate2d antoci_gate2d_mdbc gate; }
+
+# State hashes of -cpu -threads:1, -threads:2 and -gpu on the mDBC cases (each SlipMode with a
+# moving piston; the plate with mDBC on its deforming face; the 3D still tank).
+step_parity() {
+    local table="$out/parity.txt" x="$work/parity"
+    mkdir -p "$x"
+    echo "state hashes, $gpu: cpu -threads:1 | cpu -threads:2 | gpu" >"$table"
+    for s in 1 2 3; do
+        sed "s|<!--PARAMETERS-->|<parameter key=\"Boundary\" value=\"2\" /><parameter key=\"SlipMode\" value=\"$s\" /><parameter key=\"StepAlgorithm\" value=\"2\" /><parameter key=\"Kernel\" value=\"2\" /><parameter key=\"ViscoTreatment\" value=\"3\" /><parameter key=\"Visco\" value=\"1e-6\" /><parameter key=\"DensityDT\" value=\"3\" />|" \
+            "$root/tests/data/phases/PistonTankMdbc2D_Def.xml" >"$x/piston$s"_Def.xml
+        "$bin/gencase" "$x/piston$s"_Def.xml "$x/piston$s" >/dev/null
+    done
+    "$bin/gencase" "$root/cases/hydrostatic_plate_mdbc/HydrostaticPlateMdbc_Def.xml" "$x/plate" -dp:0.0125 >/dev/null
+    tank_xml 3 '<parameter key="Boundary" value="2" /><parameter key="SlipMode" value="2" />' >"$x/tank3d_Def.xml"
+    "$bin/gencase" "$x/tank3d_Def.xml" "$x/tank3d" >/dev/null
+    for spec in piston1:600 piston2:600 piston3:600 plate:400 tank3d:300; do
+        local name=${spec%%:*} n=${spec##*:} hs=()
+        for mode in "-cpu -threads:1" "-cpu -threads:2" "-gpu"; do
+            hs+=("$("$bin/seaspring" $mode -nsteps:$n -sv:none -progress:0 "$x/$name" "$x/o_$name" 2>&1 | grep -o 'State hash: [0-9a-f]*' | cut -d' ' -f3)")
+        done
+        local same=DIFFER
+        [[ -n "${hs[0]}" && "${hs[0]}" == "${hs[1]}" && "${hs[0]}" == "${hs[2]}" ]] && same=same
+        echo "$name $n steps: ${hs[*]} $same" | tee -a "$table"
+    done
+}
 
 step_cost() {
     local table="$out/cost.txt" x="$work/spheric"

@@ -32,6 +32,7 @@ struct GaugeSample {
     double mass = 0;                ///< sum V W m [kg]
     double vx = 0, vy = 0, vz = 0;  ///< sum V W v
     double press = 0;               ///< sum V W p
+    double rho = 0;                 ///< sum V W rho (seaspring-post's density)
 };
 
 /// The kernel sums at a gauge point whose PosCell (makePosCell) is `pt`, over the fluid block
@@ -55,6 +56,7 @@ SEASPRING_HD inline GaugeSample gaugeSampleAt(const Float4& pt, const std::uint3
             s.vy += w * double(vj.y);
             s.vz += w * double(vj.z);
             s.press += w * double(taitPressure7(vj.w, c.cteb, c.ovrhop0));
+            s.rho += w * double(vj.w);
         }
     });
     return s;

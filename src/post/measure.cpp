@@ -26,24 +26,7 @@ using physics::Float4;
 
 namespace {
 
-/// sum V W rho at a point: the walk and pair test of gaugeSampleAt (gauges.h), rho instead of p.
-template <class Kernel, int kDim>
-double rhopSumAt(const Float4& pt, const std::uint32_t* cell_start, const Float4* poscell, const Float4* velrho,
-                 const physics::FluidConstants& c, const physics::CellGrid& g) {
-    double s = 0;
-    physics::forEachCandidateRow<kDim>(pt, cell_start, c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par,
-                                                                 int cax) {
-        for (std::uint32_t j = pb; j < pe; ++j) {
-            float drx, dry, drz;
-            const float rr2 = physics::pairOffset<kDim>(par, poscell[j], cax, g, drx, dry, drz);
-            if (!(rr2 <= c.ker.kernelsize2)) continue;
-            const double w = double(Kernel::value(rr2, c.ker)) * (double(c.massfluid) / double(velrho[j].w));
-            s += w * double(velrho[j].w);
-        }
-    });
-    return s;
-}
-
+/// The kernel sums of every point inside the grid (physics::gaugeSampleAt, as the in-run gauges).
 template <class Kernel, int kDim>
 void sampleAll(const std::vector<Float4>& pts, const std::vector<bool>& outside, const std::vector<std::uint32_t>& cs,
                const std::vector<Float4>& poscell, const std::vector<Float4>& velrho, const physics::FluidConstants& c,
@@ -51,7 +34,7 @@ void sampleAll(const std::vector<Float4>& pts, const std::vector<bool>& outside,
     for (std::size_t k = 0; k < pts.size(); ++k) {
         if (outside[k]) continue;
         out[k].g = physics::gaugeSampleAt<Kernel, kDim>(pts[k], cs.data(), poscell.data(), velrho.data(), c, g);
-        out[k].rhop = rhopSumAt<Kernel, kDim>(pts[k], cs.data(), poscell.data(), velrho.data(), c, g);
+        out[k].rhop = out[k].g.rho;
     }
 }
 
