@@ -103,4 +103,68 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
     }
 }
 
+/// pairOffset of candidate `psb` in the frame of its own row: the row of a candidate is its
+/// (sorted) cell's y and z, so the frame forEachCandidateRow gives that row is recomputed from
+/// psb alone, with the same operations (same bits). For loops that test a candidate and
+/// evaluate the pair at different times (CandidateCursor, fluid_pair_queue.h).
+template <int kDim>
+SEASPRING_HD_INLINE float pairOffsetInOwnRow(const Float4& psa, const SearchBox& b, const Float4& psb,
+                                             const CellGrid& g, float& drx, float& dry, float& drz) {
+    const float rowdy = kDim == 3 ? g.cellsizef * float(b.cay - packedCellY(g, psb.w)) : g.cellsizef * float(b.cay);
+    const float rowdz = g.cellsizef * float(b.caz - packedCellZ(g, psb.w));
+    return pairOffset<kDim>(rowFrame(psa, rowdy, rowdz), psb, b.cax, g, drx, dry, drz);
+}
+
+/// The candidates of forEachCandidateRow, one at a time and in the same order, as a resumable
+/// position (for loops whose lanes step through their candidates together, one per step:
+/// fluid_pair_queue.h). `j` is the current candidate while !done(); its offset is
+/// pairOffset<kDim>(par, poscell[j], box.cax, ...).
+template <int kDim>
+struct CandidateCursor {
+    SearchBox box;
+    int y = 0, z = 0;
+    float gz = 0.f;               ///< cellGap of row z
+    Float4 par{0, 0, 0, 0};       ///< psa's rowFrame for the current row (pairOffset's `par`)
+    std::uint32_t j = 0, pe = 0;  ///< current candidate and the end of its row
+
+    SEASPRING_HD_INLINE bool done() const { return z > box.z1; }
+
+    /// Positions the cursor on the first candidate of `psa` (or done()).
+    SEASPRING_HD_INLINE void begin(const Float4& psa, const std::uint32_t* cell_start, const FluidConstants& c,
+                                   const CellGrid& g) {
+        box = searchBox<kDim>(psa, g);
+        z = box.z0;
+        y = box.y0 - 1;
+        gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        seekRow(psa, cell_start, c, g);
+    }
+
+    /// Moves past the current candidate.
+    SEASPRING_HD_INLINE void next(const Float4& psa, const std::uint32_t* cell_start, const FluidConstants& c,
+                                  const CellGrid& g) {
+        if (++j == pe) seekRow(psa, cell_start, c, g);
+    }
+
+private:
+    /// The first candidate of the next row in reach that has one (rows in forEachCandidateRow's
+    /// order, through rowCandidates).
+    SEASPRING_HD void seekRow(const Float4& psa, const std::uint32_t* cell_start, const FluidConstants& c,
+                              const CellGrid& g) {
+        for (;;) {
+            if (++y > box.y1) {
+                y = box.y0;
+                if (++z > box.z1) return;
+                gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+            }
+            std::uint32_t pb, e;
+            if (rowCandidates<kDim>(box, psa, y, z, gz, cell_start, c, g, pb, e) && pb < e) {
+                j = pb;
+                pe = e;
+                par = rowFrame(psa, g.cellsizef * float(box.cay - y), g.cellsizef * float(box.caz - z));
+                return;
+            }
+        }
+    }
+};
+
 }  // namespace seaspring::physics
