@@ -21,8 +21,6 @@ public:
     using Buffer = std::vector<T>;
     /// The pair loops take the host's batched form (physics::PairBatch): same bits, SIMD lanes.
     static constexpr bool kCompactPairs = true;
-    /// Lane queues are for lanes in lockstep (a GPU warp; physics/fluid_pair_queue.h).
-    static constexpr bool kLaneQueuedPairs = false;
 
     /// `threads` <= 0: OpenMP's default. Every parallel region names its thread count, so
     /// engines of different thread counts can live in one process (the typed tests do).

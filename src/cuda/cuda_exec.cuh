@@ -16,14 +16,14 @@
 
 #include "cuda/cuda_check.cuh"
 #include "cuda/device_buffer.cuh"
-#include "cuda/warp_lanes.cuh"
 
 namespace seaspring::cuda {
 
-/// One thread per index of [b, e) (runIndex: lane-queued passes through their queue).
+/// One thread per index of [b, e).
 template <int kThreads, class F>
 __global__ void __launch_bounds__(kThreads) forEachKernel(std::uint32_t b, std::uint32_t e, F f) {
-    runIndex<kThreads>(b + blockIdx.x * blockDim.x + threadIdx.x, e, f);
+    const std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < e) f(i);
 }
 
 /// Two independent passes in one launch: blocks [0, blocks_a) run fa over [ba, ea), the
@@ -33,10 +33,13 @@ template <int kThreads, class FA, class FB>
 __global__ void __launch_bounds__(kThreads) forEachTwoKernel(std::uint32_t ba, std::uint32_t ea, FA fa,
                                                              std::uint32_t blocks_a, std::uint32_t bb,
                                                              std::uint32_t eb, FB fb) {
-    if (blockIdx.x < blocks_a)
-        runIndex<kThreads>(ba + blockIdx.x * blockDim.x + threadIdx.x, ea, fa);
-    else
-        runIndex<kThreads>(bb + (blockIdx.x - blocks_a) * blockDim.x + threadIdx.x, eb, fb);
+    if (blockIdx.x < blocks_a) {
+        const std::uint32_t i = ba + blockIdx.x * blockDim.x + threadIdx.x;
+        if (i < ea) fa(i);
+    } else {
+        const std::uint32_t i = bb + (blockIdx.x - blocks_a) * blockDim.x + threadIdx.x;
+        if (i < eb) fb(i);
+    }
 }
 
 constexpr int kReduceThreads = 256;
@@ -134,10 +137,8 @@ class CudaExec {
 public:
     template <typename T>
     using Buffer = DeviceBuffer<T>;
-    /// Not the host's batches: the fluid pair loop runs through the warp's lane queue
-    /// (physics/fluid_pair_queue.h, cuda/warp_lanes.cuh).
+    /// One thread per particle walks its candidates directly (physics::fluidPairsInRow).
     static constexpr bool kCompactPairs = false;
-    static constexpr bool kLaneQueuedPairs = true;
 
     explicit CudaExec(int device);
     std::string name() const { return "gpu"; }

@@ -6,29 +6,18 @@
 #pragma once
 
 #include "physics/fluid_interaction.h"
-#include "physics/fluid_pair_queue.h"
 #include "physics/solid_coupling.h"
 #include "solver/force_passes.h"
 #include "solver/launch.h"
 
 namespace seaspring::solver {
 
-/// Fluid particle i: all its pairs (kCompact: the host's batched form; kLaneQueued: the GPU
-/// warp's lane queue, physics/fluid_pair_queue.h; same bits either way).
-template <class Opt, bool kCompact, bool kQueued = false>
+/// Fluid particle i: all its pairs (kCompact: the host's batched form, same bits).
+template <class Opt, bool kCompact>
 struct FluidForcesPass {
-    static constexpr bool kLaneQueued = kQueued;
     ForceArgs a;
     SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
-        store(i, physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g));
-    }
-    /// Called by every lane of a group (valid: i is a particle of the range).
-    template <class Lanes>
-    SEASPRING_HD void queued(std::uint32_t i, bool valid, Lanes& lanes) const {
-        const physics::FluidAccum acc = physics::fluidParticleForcesQueued<Opt>(i, valid, a.in, a.c, a.g, lanes);
-        if (valid) store(i, acc);
-    }
-    SEASPRING_HD void store(std::uint32_t i, const physics::FluidAccum& acc) const {
+        const physics::FluidAccum acc = physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g);
         a.v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
         a.v.visc[i] = acc.visc;
         if (Opt::sps) a.v.gradvel[i] = acc.gradvel;
@@ -127,14 +116,13 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     using physics::FluidOptions;
     using physics::Viscosity;
     constexpr bool kCompact = Exec::kCompactPairs;
-    constexpr bool kQueued = Exec::kLaneQueuedPairs;
     // The boundary loop reads only the kernel and the dimension. The two loops are independent
     // (each writes its own particles' acear and visc; both read the pressure pass's results). On
     // the CPU the threads that finish their share of the (uneven) boundary loop go on to the fluid.
     using BoundOpt = FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>;
     dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
         using Opt = decltype(opt);
-        const FluidForcesPass<Opt, kCompact, kQueued> fluid{a};
+        const FluidForcesPass<Opt, kCompact> fluid{a};
         const BoundForcesPass<BoundOpt, kCompact> bound{a};
         if (a.nhydro == 0) {
             exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, a.nbound, a.np,
