@@ -32,7 +32,7 @@ for dp in "${dps[@]}"; do
   if [[ ! -f "$work/$name.h5" ]]; then
     "$bin/gencase" "$case_xml" "$work/$name" -dp:"$dp" >"$work/$name.gencase.log"
   fi
-  "$bin/seaspring" "${backend[@]}" -symplectic -wendland -ddt:3 -tmax:"$tmax" -sv:none -progress:0 \
+  "$bin/seaspring" -overwrite "${backend[@]}" -symplectic -wendland -ddt:3 -tmax:"$tmax" -sv:none -progress:0 \
     "$work/$name" "$work/out_$name" >"$work/$name.run.log" 2>&1 || { cat "$work/$name.run.log"; exit 1; }
   /usr/bin/env python3 - "$work/out_$name/run.json" "$dp" >>"$csv" <<'PY'
 import json, sys

@@ -30,7 +30,7 @@ echo "dp,solid_particles,substeps,loop_s,ns_per_solid_particle_substep,device,ba
 for dp in "${dps[@]}"; do
   name="beam_dp$dp"
   [[ -f "$work/$name.h5" ]] || "$bin/gencase" "$case_xml" "$work/$name" -dp:"$dp" >"$work/$name.gencase.log"
-  "$bin/seaspring" "${backend[@]}" -nsteps:"$nsteps" -sv:none -progress:0 \
+  "$bin/seaspring" -overwrite "${backend[@]}" -nsteps:"$nsteps" -sv:none -progress:0 \
     "$work/$name" "$work/out_$name" >"$work/$name.run.log" 2>&1 || { cat "$work/$name.run.log"; exit 1; }
   /usr/bin/env python3 - "$work/out_$name/run.json" "$dp" >>"$csv" <<'PY'
 import json, sys

@@ -22,6 +22,7 @@ parity() {  # name case_path nsteps extra-args...
   local name=$1 kase=$2 n=$3; shift 3
   local h=()
   for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
+    rm -rf "$work/o_$name"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
     # shellcheck disable=SC2086
     "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$@" "$kase" "$work/o_$name" >"$work/$name.log" 2>&1 ||
       { echo "FAILED $name $b"; tail -5 "$work/$name.log"; }

@@ -19,6 +19,7 @@ parity() {  # name case_path nsteps extra-args...
   local name=$1 kase=$2 n=$3; shift 3
   local h=() extra=""
   for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
+    rm -rf "$work/o_$name"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
     # shellcheck disable=SC2086
     "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$@" "$kase" "$work/o_$name" >"$work/$name.${b//[ :]/_}.log" 2>&1 ||
       { echo "FAILED $name $b"; tail -5 "$work/$name.${b//[ :]/_}.log"; }
@@ -47,6 +48,7 @@ parity dbplate3d_breaking "$work/dbplate" 1800
 "$bin/gencase" "$root/build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" "$work/liao2d" >/dev/null
 parity liao2d_dualsphysics_case "$work/liao2d" 600
 # The per-pass GPU path on a small solid (the block path is the default there): same bits.
+rm -rf "$work/o_pp"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
 SEASPRING_SOLID_BLOCK_MAX=0 "$bin/seaspring" -gpu -nsteps:400 -sv:none -progress:0 "$work/plate" "$work/o_pp" >"$work/plate_perpass.log" 2>&1
 echo "plate2d_midpoint gpu per-pass path: $(grep -o 'State hash: [0-9a-f]*' "$work/plate_perpass.log")" | tee -a "$table"
 echo "== parity (db3d fluid-only, cells of h: c831d1020e07417e since 2026-11-22) =="; cat "$table"
@@ -67,6 +69,7 @@ marker() { [[ $have_h5py == 1 ]] && PYTHONPATH=/tmp/site python3 "$root/tools/so
 long_run() {  # name def-xml extra-args...
   local name=$1 def=$2; shift 2
   "$bin/gencase" "$def" "$work/$name" >/dev/null
+  rm -rf "$work/o_$name"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
   /usr/bin/time -f "$name wall %e s" "$bin/seaspring" -gpu -progress:0 "$@" "$work/$name" "$work/o_$name" >"$work/$name.log" 2>&1
   { echo "== $name"; grep -E "Particles:|Finished|Solids|hash|wall" "$work/$name.log"; } | tee -a "$out/long_runs.txt"
 }

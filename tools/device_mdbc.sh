@@ -69,6 +69,7 @@ step_still() {
             mkdir -p "$d"
             tank_xml $dim "<parameter key=\"Boundary\" value=\"$b\" /><parameter key=\"SlipMode\" value=\"$s\" />" >"$d/tank_Def.xml"
             "$bin/gencase" "$d/tank_Def.xml" "$d/tank" >/dev/null || { echo "gencase failed $name" | tee -a "$table"; continue; }
+            rm -rf "$d/out"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
             "$bin/seaspring" -gpu -sv:h5 -progress:0 "$d/tank" "$d/out" >"$d/log" 2>&1 || { tail -3 "$d/log"; continue; }
             local np wall
             np=$(grep -o 'Particles: [0-9]*' "$d/log" | cut -d' ' -f2)
@@ -165,6 +166,7 @@ step_parity() {
     for spec in piston1:600 piston2:600 piston3:600 plate:400 tank3d:300; do
         local name=${spec%%:*} n=${spec##*:} hs=()
         for mode in "-cpu -threads:1" "-cpu -threads:2" "-gpu"; do
+            rm -rf "$x/o_$name"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
             hs+=("$("$bin/seaspring" $mode -nsteps:$n -sv:none -progress:0 "$x/$name" "$x/o_$name" 2>&1 | grep -o 'State hash: [0-9a-f]*' | cut -d' ' -f3)")
         done
         local same=DIFFER
@@ -184,6 +186,7 @@ step_cost() {
     for round in 1 2; do
         for b in 1 2; do
             sed -i "s/key=\"Boundary\" value=\"[12]\"/key=\"Boundary\" value=\"$b\"/" "$x/sph.xml"
+            rm -rf "$x/o$b"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
             "$bin/seaspring" -gpu -symplectic -wendland -ddt:3 -nsteps:200 -sv:none -progress:0 "$x/sph" "$x/o$b" >"$x/log$b" 2>&1
             echo "round $round Boundary=$b: $(grep -E 'Finished' "$x/log$b" | grep -o '[0-9.]* ns/particle/step') $(grep -o 'Particles: [0-9]*' "$x/log$b") $(grep -o 'mDBC: .*' "$x/log$b" | head -1)" | tee -a "$table"
         done

@@ -15,7 +15,7 @@ row() {  # name case args...
   local name=$1 c=$2; shift 2; local h=() s=""
   for be in "-cpu -threads:1" "-cpu -threads:2" "-gpu"; do
     # shellcheck disable=SC2086
-    $b/seaspring $be -sv:none -progress:0 "$@" $w/$c $w/o_$name > $w/$name.log 2>&1 || tail -3 $w/$name.log
+    $b/seaspring -overwrite $be -sv:none -progress:0 "$@" $w/$c $w/o_$name > $w/$name.log 2>&1 || tail -3 $w/$name.log
     h+=("$(grep -o 'State hash: [0-9a-f]*' $w/$name.log | cut -d' ' -f3)")
     s=$(grep -o 'sorted at [0-9]* of [0-9]* divides' $w/$name.log)
   done

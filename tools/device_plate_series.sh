@@ -13,7 +13,7 @@ mkdir -p "$out" "$work"
 python3 -m pip install -q --no-index --no-deps --no-compile --no-cache-dir --target /tmp/site "$root"/.whl/*.whl
 for dp in 0.025 0.0125 0.00625 0.003125; do
   "$bin/gencase" "$root/cases/hydrostatic_plate/HydrostaticPlate_Def.xml" "$work/p$dp" -dp:$dp >/dev/null
-  /usr/bin/time -f "dp $dp wall %e s" "$bin/seaspring" -gpu -progress:0 -tmax:0.1 -tout:0.001 "$work/p$dp" "$work/o$dp" \
+  /usr/bin/time -f "dp $dp wall %e s" "$bin/seaspring" -overwrite -gpu -progress:0 -tmax:0.1 -tout:0.001 "$work/p$dp" "$work/o$dp" \
     >"$work/p$dp.log" 2>&1
   grep -E "Particles:|Solids|wall" "$work/p$dp.log" | tee -a "$out/plate_series.txt"
   PYTHONPATH=/tmp/site python3 "$root/tools/solid_marker.py" "$work/o$dp" --point 0.5,0,-0.025 --k 2 \

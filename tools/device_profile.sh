@@ -22,9 +22,9 @@ per_kernel() {  # csv -> table of GPU time per kernel name
 [[ -f $w/s4m.h5 ]] || $b/gencase build-dev/shared-cases/Spheric2Dam_01M.xml $w/s4m -dp:0.006 > /dev/null
 if [[ $parts == *kernels* ]]; then
   echo "== SPHERIC 4.4 M, ${args[*]}"
-  SEASPRING_TIMERS=1 $b/seaspring "${args[@]}" -nsteps:100 $w/s4m $w/o_t | grep -E "phase|Finished|ns/particle"
+  SEASPRING_TIMERS=1 $b/seaspring -overwrite "${args[@]}" -nsteps:100 $w/s4m $w/o_t | grep -E "phase|Finished|ns/particle"
   ncu --clock-control none --metrics gpu__time_duration.sum --csv \
-    $b/seaspring "${args[@]}" -nsteps:20 $w/s4m $w/o_p 2>/dev/null | grep -v '^==' >$w/ncu.csv
+    $b/seaspring -overwrite "${args[@]}" -nsteps:20 $w/s4m $w/o_p 2>/dev/null | grep -v '^==' >$w/ncu.csv
   per_kernel $w/ncu.csv; echo "(20 steps and the set-up)"
 fi
 if [[ $parts == *detail* ]]; then
@@ -32,7 +32,7 @@ if [[ $parts == *detail* ]]; then
     --section SpeedOfLight --section Occupancy --section LaunchStats --section WarpStateStats \
     --section InstructionStats --section SchedulerStats --section MemoryWorkloadAnalysis \
     --metrics smsp__thread_inst_executed_per_inst_executed.ratio,smsp__inst_executed.sum,smsp__thread_inst_executed.sum \
-    $b/seaspring "${args[@]}" -nsteps:5 $w/s4m $w/o_p >$out/ncu_detail.txt 2>&1
+    $b/seaspring -overwrite "${args[@]}" -nsteps:5 $w/s4m $w/o_p >$out/ncu_detail.txt 2>&1
   grep -E "Kernel|forEach|Duration|Registers|Achieved Occupancy|Theoretical Occ|Block Size|Warp Cycles Per Issued|Issue Slots|Eligible Warps|Executed Ipc|thread_inst|inst_executed|L1/TEX Hit|L2 Hit|Memory Throughput|Compute \(SM\)|Stall" $out/ncu_detail.txt | head -60
 fi
 if [[ $parts == *small* ]]; then
@@ -40,8 +40,8 @@ if [[ $parts == *small* ]]; then
   $b/gencase build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $w/liao >/dev/null 2>$w/liao.err || cat $w/liao.err
   for c in ant liao; do
     echo "== small case $c"
-    SEASPRING_TIMERS=1 $b/seaspring -gpu -sv:none -progress:0 -tmax:0.05 ${SS_ARGS:-} $w/$c $w/o_$c | grep -E "Particles|phase|Finished|ns/particle|steps|Physics|Solid"
-    ncu --clock-control none --metrics gpu__time_duration.sum --csv $b/seaspring -gpu -sv:none -progress:0 -nsteps:50 $w/$c $w/o_p2 2>/dev/null | grep -v '^==' >$w/ncu_$c.csv
+    SEASPRING_TIMERS=1 $b/seaspring -overwrite -gpu -sv:none -progress:0 -tmax:0.05 ${SS_ARGS:-} $w/$c $w/o_$c | grep -E "Particles|phase|Finished|ns/particle|steps|Physics|Solid"
+    ncu --clock-control none --metrics gpu__time_duration.sum --csv $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:50 $w/$c $w/o_p2 2>/dev/null | grep -v '^==' >$w/ncu_$c.csv
     per_kernel $w/ncu_$c.csv | head -25; echo "(50 steps and the set-up)"
   done
 fi

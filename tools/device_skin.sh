@@ -13,7 +13,7 @@ nvidia-smi --query-gpu=name --format=csv,noheader
 [[ -f $w/liao.h5 ]] || $b/gencase build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $w/liao >/dev/null 2>&1
 row() {  # label case args...
   local label=$1 c=$2; shift 2
-  $b/seaspring -gpu -sv:none -progress:0 "$@" $w/$c $w/o_$c > $w/log.txt 2>&1 || { tail -3 $w/log.txt; return; }
+  $b/seaspring -overwrite -gpu -sv:none -progress:0 "$@" $w/$c $w/o_$c > $w/log.txt 2>&1 || { tail -3 $w/log.txt; return; }
   python3 - "$w/o_$c/run.json" "$label" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))

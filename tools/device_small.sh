@@ -12,9 +12,9 @@ nvidia-smi --query-gpu=name --format=csv,noheader
 [[ -f $w/liao.h5 ]] || $b/gencase build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $w/liao >/dev/null 2>&1
 for c in ant liao; do
   echo "== $c"
-  SEASPRING_TIMERS=1 $b/seaspring -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "phase|Finished"
-  $b/seaspring -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "Finished"
-  ncu --clock-control none --metrics gpu__time_duration.sum --csv $b/seaspring -gpu -sv:none -progress:0 -nsteps:200 $w/$c $w/o_p 2>/dev/null | grep -v '^==' >$w/ncu_$c.csv
+  SEASPRING_TIMERS=1 $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "phase|Finished"
+  $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "Finished"
+  ncu --clock-control none --metrics gpu__time_duration.sum --csv $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:200 $w/$c $w/o_p 2>/dev/null | grep -v '^==' >$w/ncu_$c.csv
   awk -F'","' 'NR > 1 { k = $5; gsub(/<unnamed>::|seaspring::|cuda::|solver::|physics::/, "", k); sub(/^void /, "", k);
       if (k ~ /^forEachKernel/) { sub(/^forEachKernel<[0-9]+, /, "", k) } sub(/[<(].*/, "", k);
       v = $NF; gsub(/[",]/, "", v); n[k]++; t[k] += v; T += v; N++ }

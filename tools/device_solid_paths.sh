@@ -14,7 +14,7 @@ mkdir -p "$out" "$work"
 "$bin/gencase" "$root/cases/cantilever3d_tipload/CantileverTipLoad3D_Def.xml" "$work/tip1" >/dev/null
 "$bin/gencase" "$root/cases/hanging_beam/HangingBeam_Def.xml" "$work/beam5" -dp:0.005 >/dev/null
 run() {  # label case nsteps blockmax
-  SEASPRING_SOLID_BLOCK_MAX=$4 "$bin/seaspring" -gpu -nsteps:"$3" -sv:none -progress:0 "$work/$2" "$work/o" >"$work/$1.log" 2>&1
+  SEASPRING_SOLID_BLOCK_MAX=$4 "$bin/seaspring" -overwrite -gpu -nsteps:"$3" -sv:none -progress:0 "$work/$2" "$work/o" >"$work/$1.log" 2>&1
   printf '%-34s %s  %s  %s\n' "$1" "$(grep -o 'Solids: [0-9]* particles' "$work/$1.log")" \
     "$(grep -o 'in [0-9.]* s wall (loop [0-9.]* s)' "$work/$1.log")" "$(grep -o 'State hash: [0-9a-f]*' "$work/$1.log")" |
     tee -a "$out/paths.txt"

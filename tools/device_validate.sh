@@ -32,6 +32,7 @@ step_parity() {
     local name=${spec%%:*} n=${spec##*:} ref="" same=yes hashes=""
     for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
       local o="$work/o_${name}_${b//[^a-z0-9]/}"
+      rm -rf "$o"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
       # shellcheck disable=SC2086
       "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$work/$name" "$o" >"$o.log" 2>&1 || echo "FAILED $name $b"
       hashes+=" $(grep -o 'State hash: [0-9a-f]*' "$o.log" | cut -d' ' -f3)"
@@ -63,6 +64,7 @@ step_stability() {
     local d="$work/stab_$name"
     mkdir -p "$d"
     "$bin/gencase" "$root/$xml" "$d/case" -dp:"$dp" >"$d/gencase.log" 2>&1 || { echo "$name: gencase failed"; tail -3 "$d/gencase.log"; continue; }
+    rm -rf "$d"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
     timeout "${STAB_TIMEOUT:-400}" "$bin/seaspring" -gpu -tmax:"$tmax" -sv:h5 -progress:30 "$d/case" "$d" >"$d/run.log" 2>&1
     local rc=$?
     python3 - "$d" "$name" "$tmax" "$rc" <<'EOF' | tee -a "$table"

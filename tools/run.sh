@@ -11,7 +11,7 @@ case_def="$root/cases/dambreak3d/DamBreak3D_Def.xml"
 out="${SEASPRING_OUT:-$root/out/dambreak3d}"
 "$bin/gencase" "$case_def" "$out/DamBreak3D" -save:vtk
 # shellcheck disable=SC2086
-"$bin/seaspring" ${SEASPRING_RUN_ARGS:-} "$out/DamBreak3D" "$out/run"
+"$bin/seaspring" -overwrite ${SEASPRING_RUN_ARGS:-} "$out/DamBreak3D" "$out/run"
 echo
 echo "Output: $out"
 echo "  $out/DamBreak3D.xml    resolved case (constants, parameters, particle blocks)"

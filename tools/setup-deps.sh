@@ -9,6 +9,7 @@ packages=(
   cmake g++ make pkg-config
   libeigen3-dev libhdf5-dev libpugixml-dev libgtest-dev libcli11-dev
   python3 python3-numpy python3-h5py python3-matplotlib
+  clang libomp-dev
 )
 optional=(paraview python3-paraview xvfb xauth)
 

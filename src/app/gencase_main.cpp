@@ -3,6 +3,9 @@
 /// \brief `gencase CASE_Def.xml OUTDIR/NAME [-dp:VALUE] [-save:vtk]`: DualSPHysics GenCase
 ///        syntax in, resolved case + particles (+ bonds) out.
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -34,6 +37,16 @@ std::vector<std::string> translateArgs(int argc, char** argv) {
     return out;
 }
 
+/// A -dp value: a finite, normal number > 0 written completely ("0", "1e-400", "abc" are not).
+bool parseDp(const std::string& text, double& dp) {
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v) || !(v > 0)) return false;
+    dp = v;
+    return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -44,7 +57,8 @@ int main(int argc, char** argv) {
     std::string save;
     app.add_option("definition", opt.definition, "case definition CASE_Def.xml (.xml optional)")->required();
     app.add_option("output", opt.output_base, "OUTDIR/NAME: writes NAME.xml, NAME.h5 (NAME.vtu)")->required();
-    app.add_option("--dp", opt.dp_override, "override the particle spacing dp [m]");
+    std::string dp_text;
+    app.add_option("--dp", dp_text, "override the particle spacing dp [m] (a number > 0)");
     app.add_option("--save", save, "extra outputs: vtk (ParaView preview NAME.vtu)")
         ->check(CLI::IsMember({"vtk", "all", "none"}));
     app.add_flag("--verbose,-v", opt.verbose, "print every drawing command with its point count");
@@ -56,16 +70,26 @@ int main(int argc, char** argv) {
         return app.exit(e);
     }
     opt.save_vtk = save == "vtk" || save == "all";
+    if (!dp_text.empty() && !parseDp(dp_text, opt.dp_override)) {
+        std::cerr << "gencase error: -dp:" << dp_text << ": must be a number > 0 (metres), written in full\n";
+        return 2;
+    }
     const auto t0 = std::chrono::steady_clock::now();
+    std::cout << "SeaSpring gencase " << seaspring::kVersion << "\n";
+    seaspring::gencase::CaseBuilder builder(opt, std::cout);
     try {
-        std::cout << "SeaSpring gencase " << seaspring::kVersion << "\n";
-        seaspring::gencase::CaseBuilder builder(opt, std::cout);
         builder.build();
-        builder.write();
-    } catch (const seaspring::Error& e) {
+        builder.checkForSolver();
+    } catch (const seaspring::Error& e) {  // the input
         std::cerr << "gencase error: " << e.what() << "\n";
         return 2;
     } catch (const std::exception& e) {
+        std::cerr << "gencase error: " << e.what() << "\n";
+        return 3;
+    }
+    try {
+        builder.write();
+    } catch (const std::exception& e) {  // the outputs: a file or folder that cannot be written
         std::cerr << "gencase error: " << e.what() << "\n";
         return 3;
     }

@@ -2,22 +2,27 @@
 /// \file seaspring_main.cpp
 /// \brief The solver: `seaspring [options] OUTDIR/NAME OUTDIR` (DualSPHysics habits).
 ///
-/// Exit codes: 0 success, 2 bad input or command line, 1 run-time failure. Everything printed
-/// once OUTDIR is known (the banner, the run's lines, the summary, errors) also goes to
-/// OUTDIR/Run.out (solver/run_log.h).
+/// Exit codes: 0 success, 2 bad input or command line (an OUTDIR holding an earlier run without
+/// -overwrite included), 1 run-time failure (a blow-up or another error; run.json says which),
+/// 128 + N stopped by signal N (130 SIGINT, 143 SIGTERM). Everything printed once OUTDIR is known
+/// (the banner, the run's lines, the summary, errors) also goes to OUTDIR/Run.out
+/// (solver/run_log.h).
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/version.h"
 #include "solver/backend.h"
+#include "solver/output_dir.h"
 #include "solver/run_options.h"
 #include "solver/run_log.h"
 #include "solver/run_report.h"
 #include "solver/simulation.h"
 #include "solver/solver_case.h"
+#include "solver/stop_signal.h"
 
 using namespace seaspring;
 
@@ -38,13 +43,25 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::unique_ptr<solver::RunLog> run_log;
+    std::vector<std::string> cleared;
     try {
-        run_log = std::make_unique<solver::RunLog>(opt.outdir, std::cout);
+        // -restart from OUTDIR/restart.h5 continues that run's files in OUTDIR; a restart into
+        // another folder starts its outputs there like a new run.
+        const bool continuing =
+            !opt.restart_file.empty() && solver::restartContinuesIn(opt.restart_file, opt.outdir);
+        if (!continuing) cleared = solver::prepareOutputDir(opt.outdir, opt.overwrite);
+        run_log = std::make_unique<solver::RunLog>(opt.outdir, std::cout, continuing);
     } catch (const std::exception& e) {
         std::cerr << "seaspring: " << e.what() << "\n";
         return 2;
     }
     std::ostream& log = run_log->out();
+    solver::installStopSignals();
+    if (!cleared.empty() && !opt.quiet) {
+        log << "-overwrite: removed the earlier run's";
+        for (const std::string& f : cleared) log << " " << f;
+        log << " from " << opt.outdir << "\n";
+    }
     std::unique_ptr<solver::Simulation> sim;
     solver::SolverCase c;
     try {
@@ -82,17 +99,26 @@ int main(int argc, char** argv) {
         run_log->error(std::cerr, std::string("seaspring: ") + e.what() + "\n");
         return 2;
     }
+    const std::string json = (std::filesystem::path(opt.outdir) / "run.json").string();
     try {
         const solver::RunSummary s = sim->run();
-        const std::string json = (std::filesystem::path(opt.outdir) / "run.json").string();
         solver::writeRunJson(json, s);
         solver::printSummary(log, s);
         if (!opt.quiet)
             log << "Output: " << opt.outdir << "/parts.xdmf (ParaView), " << json << ", " << run_log->path() << "\n";
+        if (s.blowup) run_log->error(std::cerr, "seaspring: error: " + solver::describeBlowup(*s.blowup) + "\n");
         log.flush();
-        return 0;
+        return s.exit_code;
     } catch (const std::exception& e) {
         run_log->error(std::cerr, std::string("seaspring: error: ") + e.what() + "\n");
+        solver::RunSummary s = sim->summary();  // what the run had reached
+        s.stop_reason = std::string("error: ") + e.what();
+        s.exit_code = 1;
+        try {
+            solver::writeRunJson(json, s);
+        } catch (const std::exception& e2) {
+            run_log->error(std::cerr, std::string("seaspring: ") + e2.what() + "\n");
+        }
         return 1;
     }
 }

@@ -1,8 +1,8 @@
 // SeaSpring — MIT licence.
 /// \file seaspring_post_main.cpp
-/// \brief `seaspring-post measure -dirin OUTDIR -points FILE [-first N] [-last N]
-///        [-vars press,vel,rhop,wsum] [-kclimit 0.5] -savecsv OUT.csv`: post-processing of a
-///        run's part files (DualSPHysics' MeasureTool spellings; docs/post.md).
+/// \brief `seaspring-post SUBCOMMAND -dirin OUTDIR ...`: post-processing of a run's part files,
+///        with DualSPHysics' tools' spellings (docs/post.md): measure (MeasureTool), forces
+///        (ComputeForces), flow (FlowTool), isosurface (IsoSurface).
 #include <algorithm>
 #include <cctype>
 #include <iostream>
@@ -13,6 +13,9 @@
 
 #include "core/error.h"
 #include "core/version.h"
+#include "post/flow.h"
+#include "post/forces.h"
+#include "post/isosurface.h"
 #include "post/measure.h"
 
 namespace {
@@ -33,6 +36,39 @@ std::vector<std::string> translateArgs(int argc, char** argv) {
     }
     std::reverse(out.begin(), out.end());  // CLI11's vector overload parses from the back
     return out;
+}
+
+/// "21", "21,22", "11-13" (DualSPHysics' -onlymk values) -> the numbers, in order.
+std::vector<int> parseIntList(const std::string& text, const std::string& option) {
+    std::vector<int> v;
+    std::size_t a = 0;
+    auto number = [&](const std::string& w) {
+        std::size_t used = 0;
+        int x = -1;
+        try {
+            x = std::stoi(w, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (w.empty() || used != w.size() || x < 0)
+            throw seaspring::Error(option + ": '" + w + "' is not a non-negative integer (in '" + text + "')");
+        return x;
+    };
+    while (a <= text.size()) {
+        std::size_t b = text.find(',', a);
+        if (b == std::string::npos) b = text.size();
+        const std::string w = text.substr(a, b - a);
+        const std::size_t dash = w.find('-', 1);
+        if (dash == std::string::npos) {
+            v.push_back(number(w));
+        } else {
+            const int lo = number(w.substr(0, dash)), hi = number(w.substr(dash + 1));
+            if (hi < lo) throw seaspring::Error(option + ": empty range '" + w + "'");
+            for (int x = lo; x <= hi; ++x) v.push_back(x);
+        }
+        a = b + 1;
+    }
+    return v;
 }
 
 }  // namespace
@@ -63,6 +99,68 @@ int main(int argc, char** argv) {
         ->expected(3)
         ->delimiter(',');
     measure->add_option("--savecsv", mo.savecsv, "output CSV (';'-separated)")->required();
+
+    seaspring::post::ForcesOptions fo;
+    std::string onlymk, mkbound;
+    double viscoart = -1, viscolam = -1;
+    CLI::App* forces = app.add_subcommand(
+        "forces",
+        "the fluid's force on boundary or solid MKs (the in-run force gauge's function), one CSV row per part "
+        "file (ComputeForces)");
+    forces->add_option("--dirin", fo.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
+    forces->add_option("--filexml", fo.filexml, "the resolved case the run read (NAME.xml written by gencase)")->required();
+    forces->add_option("--first", fo.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
+    forces->add_option("--last", fo.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
+    CLI::Option* omk = forces->add_option("--onlymk", onlymk, "absolute MKs (mkbound + mkboundfirst), e.g. 21 or 11,21-23");
+    forces->add_option("--mkbound", mkbound, "or local mkbound numbers, e.g. 10")->excludes(omk);
+    forces->add_option("--celldiv", fo.cell_div, "cells of 2h/N as the run's -cellmode (1..4; default: as -cellmode:auto)")
+        ->check(CLI::Range(1, 4));
+    CLI::Option* art = forces->add_option("--viscoart", viscoart, "artificial viscosity alpha instead of the case's");
+    forces->add_option("--viscolam", viscolam, "laminar viscosity nu [m^2/s] instead of the case's")->excludes(art);
+    forces->add_option("--viscoboundfactor", fo.visco_bound_factor, "instead of the case's ViscoBoundFactor");
+    forces->add_option("--savecsv", fo.savecsv, "output CSV (';'-separated)")->required();
+
+    seaspring::post::FlowOptions wo;
+    CLI::App* flow = app.add_subcommand(
+        "flow", "fluid mass and volume crossing a plane section between consecutive part files, one CSV row per "
+                "part file after the first (FlowTool)");
+    flow->add_option("--dirin", wo.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
+    flow->add_option("--first", wo.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
+    flow->add_option("--last", wo.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
+    flow->add_option("--plane", wo.plane, "x,y,z,nx,ny,nz: a point of the plane and its normal (the positive direction)")
+        ->required()
+        ->expected(1, 6)
+        ->delimiter(',');
+    flow->add_option("--limits", wo.limits, "xmin,ymin,zmin,xmax,ymax,zmax: only crossings inside this box (default: the "
+                                            "whole plane)")
+        ->expected(1, 6)
+        ->delimiter(',');
+    flow->add_option("--savecsv", wo.savecsv, "output CSV (';'-separated)")->required();
+
+    seaspring::post::IsosurfaceOptions io;
+    CLI::App* iso = app.add_subcommand(
+        "isosurface", "the free surface of every part file: the gauges' kernel sums on a grid (PREFIX_NNNN.vti), "
+                      "contoured by VTK under pvpython into VTK polydata (PREFIX_NNNN.vtp) (IsoSurface)");
+    iso->add_option("--dirin", io.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
+    iso->add_option("--first", io.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
+    iso->add_option("--last", io.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
+    iso->add_option("--var", io.var, "the field contoured: mass (sum V W m, default) or wsum (sum V W)");
+    iso->add_option("--level", io.level, "contour value (default: 0.5 m_fluid in 3D, 0.4 m_fluid in 2D; 0.5 for wsum)")
+        ->check(CLI::NonNegativeNumber);
+    CLI::Option* dn = iso->add_option("--distnode", io.distnode, "grid node spacing [m] (default: dp)")
+                          ->check(CLI::PositiveNumber);
+    iso->add_option("--distnode_dp", io.distnode_dp, "grid node spacing in units of dp (default 1)")
+        ->check(CLI::PositiveNumber)
+        ->excludes(dn);
+    iso->add_option("--limits", io.limits, "xmin,ymin,zmin,xmax,ymax,zmax: the grid's box (default: the fluid's box "
+                                           "grown by 2h and a node)")
+        ->expected(1, 6)
+        ->delimiter(',');
+    iso->add_option("--savevtk", io.savevtk, "output prefix: PREFIX_NNNN.vti (grid) and PREFIX_NNNN.vtp (surface)")
+        ->required();
+    iso->add_flag("--gridonly", io.gridonly, "write the grids only (no pvpython needed)");
+    iso->add_option("--pvpython", io.pvpython, "ParaView's pvpython (default: $SEASPRING_PVPYTHON, else the PATH)");
+    iso->add_option("--script", io.script, "the contouring script (default: the sources' tools/isosurface.py)");
     try {
         std::vector<std::string> args = translateArgs(argc, argv);
         app.parse(args);
@@ -77,6 +175,16 @@ int main(int argc, char** argv) {
                 mo.grid.min = seaspring::Vec3d{gridmin[0], gridmin[1], gridmin[2]};
             }
             seaspring::post::runMeasure(mo, std::cout);
+        } else if (forces->parsed()) {
+            if (!onlymk.empty()) fo.onlymk = parseIntList(onlymk, "-onlymk");
+            if (!mkbound.empty()) fo.mkbound = parseIntList(mkbound, "-mkbound");
+            if (viscoart >= 0) fo.visco_treatment = 1, fo.visco = viscoart;
+            if (viscolam >= 0) fo.visco_treatment = 3, fo.visco = viscolam;
+            seaspring::post::runForces(fo, std::cout);
+        } else if (flow->parsed()) {
+            seaspring::post::runFlow(wo, std::cout);
+        } else if (iso->parsed()) {
+            seaspring::post::runIsosurface(io, std::cout);
         }
     } catch (const seaspring::Error& e) {
         std::cerr << "seaspring-post error: " << e.what() << "\n";

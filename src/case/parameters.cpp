@@ -50,8 +50,15 @@ public:
         }
     }
 
+    /// gencase: the entries it read and resolved itself (`nodes`: the <parameter> of each key
+    /// given; `values`: every key's value, expressions evaluated and defaults filled in).
+    ParameterTable(const XmlSource& src, pugi::xml_node params, std::map<std::string, pugi::xml_node> nodes,
+                   const ParameterValues& values)
+        : src_(src), params_(params), given_(std::move(nodes)), values_(values.begin(), values.end()) {}
+
     /// The value as written, or the default ("" for an absent required key).
     std::string text(const std::string& key) const {
+        if (const auto v = values_.find(key); v != values_.end()) return v->second;
         const auto it = given_.find(key);
         if (it != given_.end()) return it->second.attribute("value").value();
         const ParameterInfo* info = findParameter(key);
@@ -110,6 +117,7 @@ private:
     const XmlSource& src_;
     pugi::xml_node params_;
     std::map<std::string, pugi::xml_node> given_;
+    std::map<std::string, std::string> values_;  ///< gencase's resolved values (empty in the solver)
 };
 
 SolverParameters readParameters(const ParameterTable& t) {
@@ -191,6 +199,11 @@ void writeParameters(pugi::xml_node parent, const ParameterValues& values, const
 
 SolverParameters readSolverParameters(const XmlSource& src, pugi::xml_node parameters, bool has_fluid) {
     return readParameters(ParameterTable(src, parameters, has_fluid));
+}
+
+SolverParameters checkSolverParameters(const XmlSource& src, pugi::xml_node parameters,
+                                       std::map<std::string, pugi::xml_node> nodes, const ParameterValues& values) {
+    return readParameters(ParameterTable(src, parameters, std::move(nodes), values));
 }
 
 DomainBox readSimulationDomain(const XmlSource& src, pugi::xml_node params, int dimensions) {

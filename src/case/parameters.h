@@ -12,6 +12,7 @@
 /// DualSPHysics does.
 #pragma once
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +67,13 @@ void writeParameters(pugi::xml_node parent, const ParameterValues& values, const
 /// Reads the `<parameter>` entries of `parameters` (see file comment). `has_fluid`: Visco is
 /// required only when the case has fluid. cfl_number is left at its default (it is a constant).
 SolverParameters readSolverParameters(const XmlSource& src, pugi::xml_node parameters, bool has_fluid);
+
+/// gencase: the checks of readSolverParameters (the same function) on the values gencase resolved
+/// from a definition (`values`: every key, expressions evaluated, defaults filled in; `nodes`: the
+/// `<parameter>` element of each key the definition gives, named in messages; `parameters`: the
+/// `<parameters>` element, named for defaults).
+SolverParameters checkSolverParameters(const XmlSource& src, pugi::xml_node parameters,
+                                       std::map<std::string, pugi::xml_node> nodes, const ParameterValues& values);
 
 /// Reads `<simulationdomain>` of `parameters`; posmin must lie below posmax in each axis
 /// (equal allowed in y for 2D).

@@ -28,6 +28,37 @@ std::string trim(const std::string& s) {
     return s.substr(b, e - b);
 }
 
+/// A value for messages: long values are cut.
+std::string clip(const std::string& v) {
+    if (v.size() <= 80) return v;
+    return v.substr(0, 60) + "... (" + std::to_string(v.size()) + " characters)";
+}
+
+/// The deepest element nesting a case file may have (DualSPHysics cases use fewer than 10):
+/// bounds the work of every recursive walk and copy of the document, disabled ('_') subtrees
+/// included.
+constexpr int kMaxXmlDepth = 64;
+
+/// The first element nested deeper than kMaxXmlDepth (null when none), found without recursion.
+pugi::xml_node tooDeep(pugi::xml_node root) {
+    int depth = 1;
+    for (pugi::xml_node n = root; n;) {
+        if (depth > kMaxXmlDepth && n.type() == pugi::node_element) return n;
+        if (pugi::xml_node c = n.first_child()) {
+            n = c;
+            ++depth;
+            continue;
+        }
+        while (n && n != root && !n.next_sibling()) {
+            n = n.parent();
+            --depth;
+        }
+        if (!n || n == root) break;
+        n = n.next_sibling();
+    }
+    return pugi::xml_node();
+}
+
 }  // namespace
 
 double PlainNumbers::evaluate(const std::string& text) const {
@@ -62,6 +93,10 @@ XmlSource::XmlSource(const std::string& path) : path_(path) {
                         std::string("XML parse error: ") + r.description());
     }
     if (!doc_.document_element()) throwInputError(path, 1, "no root element");
+    if (const pugi::xml_node deep = tooDeep(doc_.document_element()))
+        throwInputError(path, lineOf(deep),
+                        "<" + std::string(deep.name()) + "> elements are nested deeper than " +
+                            std::to_string(kMaxXmlDepth) + " levels (disabled '_' elements count too)");
 }
 
 std::string XmlSource::directory() const {
@@ -94,7 +129,7 @@ double XmlSource::number(pugi::xml_node node, const char* attr,
         if (!raw.empty() && raw[0] == '#') return ev.evaluate(raw.substr(1));
         return parseNumber(raw);
     } catch (const ValueError& e) {
-        fail(node, std::string("attribute ") + attr + "=\"" + raw + "\": " + e.what());
+        fail(node, std::string("attribute ") + attr + "=\"" + clip(raw) + "\": " + e.what());
     }
 }
 

@@ -10,6 +10,7 @@
 #include <ostream>
 
 #include "core/case_parameters.h"
+#include "case/case_checks.h"
 #include "core/error.h"
 #include "gencase/resolved_case_writer.h"
 
@@ -30,6 +31,22 @@ std::string resolveDefinitionPath(const std::string& path) {
     throwInputError(path, 0, "case definition not found (also tried " + path + ".xml)");
 }
 
+void checkOutputBase(const std::string& definition, const std::string& output_base) {
+    const fs::path base(output_base);
+    const std::string name = base.filename().string();
+    if (name.empty() || name == "." || name == "..")
+        throwInputError(output_base.empty() ? "\"\"" : output_base, 0,
+                        "the output must be OUTDIR/NAME, ending in a file name (NAME.xml and NAME.h5 are written)");
+    std::error_code ec;
+    const fs::path def = fs::weakly_canonical(definition, ec);
+    for (const char* ext : {".xml", ".h5", ".vtu"}) {
+        const fs::path out = fs::weakly_canonical(output_base + ext, ec);
+        if (!ec && out == def)
+            throwInputError(output_base, 0, "the output " + output_base + ext + " is the case definition " + definition +
+                                                " itself: choose another OUTDIR/NAME (gencase never overwrites its input)");
+    }
+}
+
 CaseBuilder::CaseBuilder(GencaseOptions options, std::ostream& log)
     : opt_(std::move(options)), log_(log) {}
 
@@ -38,7 +55,9 @@ CaseBuilder::~CaseBuilder() = default;
 const GeneratedCase& CaseBuilder::build() {
     if (opt_.dp_override < 0 || std::isnan(opt_.dp_override))
         throwInputError("-dp", 0, "dp=" + std::to_string(opt_.dp_override) + ": must be > 0");
-    src_ = std::make_unique<XmlSource>(resolveDefinitionPath(opt_.definition));
+    const std::string definition = resolveDefinitionPath(opt_.definition);
+    checkOutputBase(definition, opt_.output_base);
+    src_ = std::make_unique<XmlSource>(definition);
     out_.name = fs::path(opt_.output_base).filename().string();
     pugi::xml_node root = src_->root();
     if (std::string(root.name()) != "case") src_->fail(root, "root element must be <case>");
@@ -184,6 +203,7 @@ void CaseBuilder::readGauges(pugi::xml_node execution) {
 
 void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
     std::map<std::string, std::string> given;
+    std::map<std::string, pugi::xml_node> nodes;  // the <parameter> of each key given
     if (parameters) {
         src_->checkChildren(parameters, {"parameter", "simulationdomain"});
         src_->checkUnique(parameters, {"simulationdomain"});
@@ -201,6 +221,8 @@ void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
             }
             if (info->kind == ParameterKind::Deprecated)
                 log_ << "Note: " << src_->where(p) << ": parameter " << key << " is deprecated and ignored\n";
+            else
+                nodes[key] = p;
             given[key] = value;
         }
     }
@@ -215,6 +237,8 @@ void CaseBuilder::resolveParameters(pugi::xml_node parameters) {
         if (it != given.end()) out_.parameters.emplace_back(info.key, it->second);
         else if (info.default_value) out_.parameters.emplace_back(info.key, info.default_value);
     }
+    // What seaspring would reject, gencase rejects: the solver's own reader on these values.
+    model::checkSolverParameters(*src_, parameters ? parameters : src_->root(), std::move(nodes), out_.parameters);
 }
 
 MkTypes CaseBuilder::classifyMks() const {
@@ -265,7 +289,11 @@ void CaseBuilder::checkMkUsage() const {
 
 void CaseBuilder::finishParticles() {
     const MkTypes types = classifyMks();
-    out_.particles = extractParticles(grid_, types, &lattice_);
+    try {
+        out_.particles = extractParticles(grid_, types, &lattice_);
+    } catch (const Error& e) {
+        src_->fail(src_->root().child("casedef").child("geometry").child("definition"), e.what());
+    }
     ParticleSet& p = out_.particles;
     if (p.size() == 0) src_->fail(src_->root(), "the case has no particles: nothing was drawn inside pointmin..pointmax");
     if (p.size() > 0xFFFFFFF0ull) src_->fail(src_->root(), "more than 4e9 particles");
@@ -321,6 +349,14 @@ void CaseBuilder::finishParticles() {
     }
     pugi::xml_node sd = src_->root().child("execution").child("parameters").child("simulationdomain");
     out_.domain = resolveSimulationDomain(*src_, sd, ev_, box);
+}
+
+void CaseBuilder::checkForSolver() const {
+    const pugi::xml_node casedef = src_->root().child("casedef");
+    model::checkCaseHasWork(*src_, src_->root(), out_.count(ParticleType::Fluid), out_.count(ParticleType::Solid));
+    const std::size_t nfixed_moving = out_.count(ParticleType::Fixed) + out_.count(ParticleType::Moving);
+    model::checkCaseConstants(*src_, casedef.child("constantsdef"), casedef, out_.constants,
+                              out_.count(ParticleType::Fluid) > 0, nfixed_moving > 0);
 }
 
 void CaseBuilder::write() const {

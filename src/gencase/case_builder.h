@@ -69,6 +69,12 @@ public:
 
     /// Reads and validates the definition and generates everything in memory.
     const GeneratedCase& build();
+    /// After build(): the solver's checks of the constants and the particle counts
+    /// (case/case_checks.h: every constant finite, cflnumber in (0, 1], a speed of sound with
+    /// fluid, fluid or solid particles at all), which the parameters already passed in build().
+    /// gencase runs it before write(), so that it never writes a case the solver rejects; the
+    /// geometry tests build cases without fluid and skip it. Throws seaspring::Error.
+    void checkForSolver() const;
     /// Writes OUTDIR/NAME.xml, NAME.h5 (and NAME.vtu): temporary names first, renamed at the end.
     void write() const;
 
@@ -98,6 +104,10 @@ private:
     std::vector<Vec3i> lattice_;
     GeneratedCase out_;
 };
+
+/// Throws seaspring::Error when OUTDIR/NAME names no file ("", "/", "dir/") or when one of the
+/// outputs (NAME.xml, NAME.h5, NAME.vtu) would be the definition itself.
+void checkOutputBase(const std::string& definition, const std::string& output_base);
 
 /// Resolves "Case_Def" to "Case_Def.xml" when only the latter exists.
 std::string resolveDefinitionPath(const std::string& path);

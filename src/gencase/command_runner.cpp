@@ -16,6 +16,10 @@ using model::parseNumber;
 namespace {
 
 constexpr int kMaxListDepth = 32;
+/// The most commands one case may run, runlist repetitions counted (GenCase cases run a few
+/// thousand): lists that call lists many times over stop with an error instead of running for
+/// ever.
+constexpr std::uint64_t kMaxCommandsRun = 1000000;
 
 std::string trimmed(const std::string& s) {
     std::size_t b = 0, e = s.size();
@@ -88,8 +92,13 @@ void CommandRunner::run(pugi::xml_node commands) {
 
 void CommandRunner::runList(pugi::xml_node list, int depth) {
     if (depth > kMaxListDepth) src_.fail(list, "runlist nesting deeper than 32 (recursive lists?)");
-    for (pugi::xml_node cmd : list.children())
-        if (!XmlSource::isDisabled(cmd)) runCommand(cmd, depth);
+    for (pugi::xml_node cmd : list.children()) {
+        if (XmlSource::isDisabled(cmd)) continue;
+        if (++commands_run_ > kMaxCommandsRun)
+            src_.fail(cmd, "more than " + std::to_string(kMaxCommandsRun) +
+                               " commands run: the runlist repetitions (times) of nested lists multiply");
+        runCommand(cmd, depth);
+    }
 }
 
 void CommandRunner::defineVariables(pugi::xml_node node, bool constant, bool assign) {

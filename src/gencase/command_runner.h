@@ -10,6 +10,7 @@
 /// `<shapeout file="X"/>` collects into the shape set X (for `<normals>`).
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -88,6 +89,7 @@ private:
     std::vector<ShapeFace> pending_faces_;  ///< recorded since the last <shapeout>
     int pending_first_line_ = 0;            ///< line of the first command that recorded them
     std::vector<ShapeSet> shape_sets_;
+    std::uint64_t commands_run_ = 0;  ///< commands run so far, runlist repetitions counted
 };
 
 /// Parses a `<boxfill>` text ("solid", "all^top", "bottom | left | right") into BoxFaces.

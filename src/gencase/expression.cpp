@@ -97,6 +97,9 @@ const char* const kUnsupportedFunctions[] = {"rand", "randint", "randinit", "wav
 
 /// Parses and evaluates one expression text. `skip_` > 0 while inside a branch whose value
 /// is not used (see the file comment).
+/// The deepest nesting an expression may have (GenCase cases use fewer than 10 levels).
+constexpr int kMaxExpressionDepth = 256;
+
 class Parser {
 public:
     Parser(const std::string& text, const ExpressionEvaluator& ev, Vec3d origin, double dp)
@@ -114,13 +117,19 @@ public:
 
 private:
     [[noreturn]] void fail(std::size_t at, const std::string& what) const {
-        throw ExpressionError("in '" + text_ + "' at position " + std::to_string(at) + ": " + what);
+        throw ExpressionError("in '" + shown() + "' at position " + std::to_string(at) + ": " + what);
+    }
+
+    /// The text for messages: long texts are cut (a message must stay one readable line).
+    std::string shown() const {
+        if (text_.size() <= 80) return text_;
+        return text_.substr(0, 60) + "... (" + std::to_string(text_.size()) + " characters)";
     }
 
     /// Non-finite results are errors, except in a branch that is not taken.
     double checked(double v, std::size_t at, const std::string& what) const {
         if (!std::isfinite(v) && skip_ == 0)
-            throw ExpressionError("'" + text_ + "' gives a non-finite value: " + what +
+            throw ExpressionError("'" + shown() + "' gives a non-finite value: " + what +
                                   " at position " + std::to_string(at) + " gives " + fmt(v));
         return v;
     }
@@ -230,7 +239,17 @@ private:
         return v;
     }
 
+    /// Every nesting (parentheses, unary operators, '^', arguments, indices) passes through
+    /// parseUnary; its depth is bounded so that no input can exhaust the stack.
     double parseUnary() {
+        struct Depth {
+            int& d;
+            explicit Depth(int& v) : d(v) { ++d; }
+            ~Depth() { --d; }
+        } depth(depth_);
+        if (depth_ > kMaxExpressionDepth)
+            fail(pos_, "nested deeper than " + std::to_string(kMaxExpressionDepth) +
+                           " levels (parentheses, unary operators, '^' or function calls)");
         if (accept("+")) return parseUnary();
         if (accept("-")) return -parseUnary();
         if (accept("!")) return parseUnary() == 0 ? 1.0 : 0.0;
@@ -320,7 +339,7 @@ private:
             std::string hint;
             for (const FunctionSpec& f : kFunctions)
                 if (name == f.name) hint = " (for the function write '" + name + "(...)')";
-            throw ExpressionError("unknown variable '" + name + "' in '" + text_ +
+            throw ExpressionError("unknown variable '" + name + "' in '" + shown() +
                                   "' at position " + std::to_string(start) + hint);
         }
         return ev_.value(name);
@@ -379,6 +398,7 @@ private:
     double dp_;
     std::size_t pos_ = 0;
     int skip_ = 0;
+    int depth_ = 0;  ///< parseUnary calls in progress
 };
 
 }  // namespace

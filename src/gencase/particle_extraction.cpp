@@ -8,9 +8,17 @@
 
 #include <omp.h>
 
+#include "core/error.h"
+#include "core/memory_budget.h"
 #include "physics/eos_tait.h"
 
 namespace seaspring::gencase {
+
+namespace {
+/// gencase's memory per particle [bytes]: the ParticleSet (63), its lattice index (12), and the
+/// HDF5 writer's and resolved-case builder's copies of the fields.
+constexpr double kBytesPerParticle = 160;
+}  // namespace
 
 ParticleSet extractParticles(const LatticeGrid& grid, const MkTypes& types,
                              std::vector<Vec3i>* lattice) {
@@ -47,6 +55,10 @@ ParticleSet extractParticles(const LatticeGrid& grid, const MkTypes& types,
             start[t][mk] = total;
             total += hist[t][mk];
         }
+    // The particles, their lattice indices, and the copies the writers make.
+    const std::string memory = memoryProblem(std::to_string(total) + " particles", double(total) * kBytesPerParticle,
+                                             "increase dp or reduce the drawn volume");
+    if (!memory.empty()) throw Error(memory);
     ParticleSet p;
     p.resize(total);
     if (lattice) lattice->assign(total, Vec3i{0, 0, 0});

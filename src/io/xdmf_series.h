@@ -37,6 +37,10 @@ public:
     /// OUTDIR/parts.xdmf.
     const std::string& path() const { return path_; }
     std::size_t frameCount() const { return frames_.size(); }
+    /// The frames so far (a restart file keeps them) ...
+    const std::vector<std::string>& frames() const { return frames_; }
+    /// ... and back (a restarted run continuing in the same OUTDIR; written at the next add()).
+    void restoreFrames(std::vector<std::string> frames) { frames_ = std::move(frames); }
 
 private:
     std::string outdir_;

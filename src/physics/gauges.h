@@ -9,7 +9,9 @@
 ///       mass = sum_j V_j W_j m_j (SWL: ~ m inside the fluid, falls to 0 across the surface);
 ///   - the free surface along a line of points: the first point whose mass drops below
 ///     masslimit after one above it, linearly interpolated between the two (JGaugeSwl);
-///   - the highest fluid particle within distlimit (horizontally) of a vertical line (JGaugeMaxZ).
+///   - the highest fluid particle within distlimit (horizontally) of a vertical line (JGaugeMaxZ);
+///   - the crossing of a plane section by a particle between two saved times (seaspring-post
+///     flow, DualSPHysics' FlowTool).
 /// Unlike DualSPHysics' gauges, a particle exactly at the point counts (it carries the largest
 /// weight; only a particle's pair with itself is excluded in the force loops).
 /// Sums run in the neighbour order of the force loops (forEachCandidateRow: rows by z then y,
@@ -116,6 +118,31 @@ SEASPRING_HD inline double maxzRowAt(const MaxzRow& r, const std::uint32_t* cell
         if (dx * dx + dy * dy <= r.r2 && p.z > zmax) zmax = p.z;
     }
     return zmax;
+}
+
+/// A plane section: the plane through `o` with unit normal `n`, limited to the crossing points
+/// inside the box [lo, hi] (infinite bounds: the whole plane).
+struct PlaneSection {
+    Double3 o, n, lo, hi;
+};
+
+/// Signed distance of p from the section's plane, along n.
+SEASPRING_HD inline double planeDistance(const PlaneSection& s, const Double3& p) {
+    return (p.x - s.o.x) * s.n.x + (p.y - s.o.y) * s.n.y + (p.z - s.o.z) * s.n.z;
+}
+
+/// How a particle that moved (in a straight line) from p0 to p1 crossed the section: +1 from
+/// the negative side (distance < 0) to the other (>= 0), -1 back, 0 not at all or outside the
+/// box. The crossing point is p0 + (p1 - p0) d0 / (d0 - d1). A particle on the plane counts on
+/// the positive side, so one that stops on it has crossed once.
+SEASPRING_HD inline int sectionCrossing(const PlaneSection& s, const Double3& p0, const Double3& p1) {
+    const double d0 = planeDistance(s, p0), d1 = planeDistance(s, p1);
+    const int dir = d0 < 0.0 && d1 >= 0.0 ? 1 : d0 >= 0.0 && d1 < 0.0 ? -1 : 0;
+    if (dir == 0) return 0;
+    const double f = d0 / (d0 - d1);
+    const double x = p0.x + (p1.x - p0.x) * f, y = p0.y + (p1.y - p0.y) * f, z = p0.z + (p1.z - p0.z) * f;
+    const bool inside = x >= s.lo.x && x <= s.hi.x && y >= s.lo.y && y <= s.hi.y && z >= s.lo.z && z <= s.hi.z;
+    return inside ? dir : 0;
 }
 
 /// Marks boundary ids that no gauge asks for (slot_of_id).

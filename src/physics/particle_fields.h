@@ -16,14 +16,16 @@
 ///                  it holds); the next predictor overwrites it otherwise;
 ///      kHashed     enters the state hash, in table order, particle by particle (id order);
 ///      kHost       copied back to the host (HostState, id order) for outputs and reports;
-///      kCheckpoint part of the state a restart needs;
+///      kCheckpoint part of the state a restart needs (Backend::saveState, in sorted order);
 ///      kHalo       read across a subdomain edge by a neighbour's pair loop (multi-GPU);
 ///      kForceEval  a force evaluation's result: meaningful from the force evaluation until
 ///                  the next divide, whose sort keeps its keys, permutation and gather scratch
 ///                  in these fields' memory (solver/engine.h, SortMemory): no second copy of
 ///                  the particles for the sort.
 ///    Fields without kSorted are rebuilt before they are read (PosCell by every divide, the
-///    force-evaluation fields by every force evaluation).
+///    force-evaluation fields by every force evaluation). PosCell is still checkpointed: between
+///    two sorts it holds the cell each particle was sorted into (the skin, cell_grid.h), which a
+///    restart must keep to continue with the same neighbour order.
 #pragma once
 
 #include <cstdint>
@@ -51,7 +53,7 @@ enum class FieldNeed { Always, Sps };
     X(pos,         ::seaspring::physics::Double3, Always, kSorted | kHashed | kHost | kCheckpoint | kHalo) \
     X(velrho,      ::seaspring::physics::Float4,  Always, kSorted | kHashed | kHost | kCheckpoint | kHalo) \
     X(excl,        std::uint8_t,             Always,     kSorted | kHashed | kHost | kCheckpoint)          \
-    X(poscell,     ::seaspring::physics::Float4,  Always, kHalo)                                            \
+    X(poscell,     ::seaspring::physics::Float4,  Always, kCheckpoint | kHalo)                              \
     X(press_ovrho, ::seaspring::physics::Float2,  Always, kForceEval | kHalo)                               \
     X(velrho_pre,  ::seaspring::physics::Float4,  Always, kSortedPre | kCheckpoint)                         \
     X(acear,       ::seaspring::physics::Float4,  Always, kForceEval)                                       \

@@ -7,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <ostream>
 
 #include "core/error.h"
@@ -17,11 +16,12 @@
 #include "physics/fluid_constants.h"
 #include "physics/neighbour_rows.h"
 #include "physics/sph_kernels.h"
+#include "post/part_series.h"
 #include "post/points_file.h"
+#include "post/sorted_block.h"
 
 namespace seaspring::post {
 
-namespace fs = std::filesystem;
 using physics::Float4;
 
 namespace {
@@ -31,7 +31,9 @@ template <class Kernel, int kDim>
 void sampleAll(const std::vector<Float4>& pts, const std::vector<bool>& outside, const std::vector<std::uint32_t>& cs,
                const std::vector<Float4>& poscell, const std::vector<Float4>& velrho, const physics::FluidConstants& c,
                const physics::CellGrid& g, std::vector<PointSums>& out) {
-    for (std::size_t k = 0; k < pts.size(); ++k) {
+    // Points are independent: the same sums with any number of threads.
+#pragma omp parallel for schedule(dynamic, 256)
+    for (long long k = 0; k < static_cast<long long>(pts.size()); ++k) {
         if (outside[k]) continue;
         out[k].g = physics::gaugeSampleAt<Kernel, kDim>(pts[k], cs.data(), poscell.data(), velrho.data(), c, g);
         out[k].rhop = out[k].g.rho;
@@ -114,29 +116,10 @@ std::vector<PointSums> measurePart(const io::PartData& d, const std::vector<Vec3
     const double gmax[3] = {hi[0] + m, ymax, hi[2] + m};
 
     // Sorted by (cell, id) as the solver's sort, PosCell and cell starts.
-    const std::size_t nf = fluid.size();
-    std::vector<std::uint64_t> key(nf);
-    std::vector<Float4> pc(nf);
-    for (std::size_t n = 0; n < nf; ++n) {
-        const std::uint32_t i = fluid[n];
-        std::uint32_t cell;
-        const double y = dim == 2 ? lo[1] : d.pos[3 * i + 1];
-        pc[n] = physics::makePosCell(g, physics::Double3{d.pos[3 * i], y, d.pos[3 * i + 2]}, cell);
-        key[n] = physics::sortKey(cell, d.id[i], false);
-    }
-    std::vector<std::uint32_t> order(nf);
-    for (std::size_t n = 0; n < nf; ++n) order[n] = std::uint32_t(n);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
-    const std::uint32_t ncell = g.cellCount();
-    std::vector<std::uint32_t> cs(std::size_t(ncell) + 1, 0);
-    std::vector<Float4> poscell(nf), velrho(nf);
-    for (std::size_t n = 0; n < nf; ++n) {
-        const std::uint32_t s = order[n], i = fluid[s];
-        poscell[n] = pc[s];
-        velrho[n] = Float4{d.vel[3 * i], d.vel[3 * i + 1], d.vel[3 * i + 2], d.rhop[i]};
-        ++cs[std::size_t(key[s] >> 32) + 1];
-    }
-    for (std::uint32_t q = 0; q < ncell; ++q) cs[q + 1] += cs[q];
+    SortedParticles sp;
+    const std::vector<std::uint32_t> cs = appendSortedBlock(d, fluid, g, dim, sp, lo[1]);
+    const std::vector<Float4>& poscell = sp.poscell;
+    const std::vector<Float4>& velrho = sp.velrho;
 
     // The points' PosCell (2D: on the particles' plane); outside the grid: nothing.
     std::vector<Float4> pts(points.size());
@@ -158,30 +141,6 @@ std::vector<PointSums> measurePart(const io::PartData& d, const std::vector<Vec3
     return out;
 }
 
-std::vector<std::pair<int, std::string>> listPartFiles(const std::string& dirin, int first, int last) {
-    const fs::path data = fs::path(dirin) / "data";
-    std::error_code ec;
-    if (!fs::is_directory(data, ec)) throw Error(data.string() + ": no such folder (is -dirin the run's OUTDIR?)");
-    std::vector<std::pair<int, std::string>> v;
-    for (const auto& e : fs::directory_iterator(data, ec)) {
-        const std::string n = e.path().filename().string();
-        if (n.size() < 5 + 4 + 3 || n.compare(0, 5, "part_") != 0 || n.compare(n.size() - 3, 3, ".h5") != 0) continue;
-        const std::string num = n.substr(5, n.size() - 8);
-        if (num.size() < 4 || num.size() > 9 || !std::all_of(num.begin(), num.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
-            continue;
-        const int idx = std::stoi(num);
-        if ((first >= 0 && idx < first) || (last >= 0 && idx > last)) continue;
-        v.emplace_back(idx, e.path().string());
-    }
-    std::sort(v.begin(), v.end());
-    if (v.empty())
-        throw Error(data.string() + ": no part_NNNN.h5 file" +
-                    (first >= 0 || last >= 0 ? " in the range " + std::to_string(std::max(first, 0)) + ".." +
-                                                   (last >= 0 ? std::to_string(last) : std::string("end"))
-                                             : std::string()));
-    return v;
-}
-
 int runMeasure(const MeasureOptions& o, std::ostream& log) {
     if (o.savecsv.empty()) throw Error("-savecsv: no output file given");
     if (o.vars.empty()) throw Error("-vars: no variable");
@@ -190,58 +149,43 @@ int runMeasure(const MeasureOptions& o, std::ostream& log) {
     const auto parts = listPartFiles(o.dirin, o.first, o.last);
     log << "measure: " << pts.size() << " point(s), " << parts.size() << " part file(s) (" << parts.front().first
         << ".." << parts.back().first << ") in " << o.dirin << "\n";
-    const std::string tmp = o.savecsv + ".tmp";
-    std::FILE* f = std::fopen(tmp.c_str(), "w");
-    if (!f) throw Error(o.savecsv + ": cannot write the CSV file");
+    AtomicTextFile out(o.savecsv);
+    std::FILE* f = out.file();
     int rows = 0;
-    try {
-        std::string h = "part;time";
+    std::string h = "part;time";
+    for (MeasureVar v : o.vars)
+        for (std::size_t p = 0; p < pts.size(); ++p) {
+            const std::string k = std::to_string(p);
+            switch (v) {
+                case MeasureVar::Press: h += ";press_" + k; break;
+                case MeasureVar::Vel: h += ";velx_" + k + ";vely_" + k + ";velz_" + k; break;
+                case MeasureVar::Rhop: h += ";rhop_" + k; break;
+                case MeasureVar::Wsum: h += ";wsum_" + k; break;
+            }
+        }
+    std::fprintf(f, "%s\n", h.c_str());
+    for (const auto& [idx, path] : parts) {
+        const io::PartData d = io::readPartH5(path);
+        const std::vector<PointSums> s = measurePart(d, pts, o.grid, path);
+        std::fprintf(f, "%d;%.10g", idx, d.time);
+        const double kc = o.kclimit;
         for (MeasureVar v : o.vars)
-            for (std::size_t p = 0; p < pts.size(); ++p) {
-                const std::string k = std::to_string(p);
+            for (const PointSums& q : s) {
+                const physics::GaugeSample& g = q.g;
                 switch (v) {
-                    case MeasureVar::Press: h += ";press_" + k; break;
-                    case MeasureVar::Vel: h += ";velx_" + k + ";vely_" + k + ";velz_" + k; break;
-                    case MeasureVar::Rhop: h += ";rhop_" + k; break;
-                    case MeasureVar::Wsum: h += ";wsum_" + k; break;
+                    case MeasureVar::Press: std::fprintf(f, ";%.9g", physics::shepard(g.press, g.wsum, kc)); break;
+                    case MeasureVar::Vel:
+                        std::fprintf(f, ";%.9g;%.9g;%.9g", physics::shepard(g.vx, g.wsum, kc),
+                                     physics::shepard(g.vy, g.wsum, kc), physics::shepard(g.vz, g.wsum, kc));
+                        break;
+                    case MeasureVar::Rhop: std::fprintf(f, ";%.9g", physics::shepard(q.rhop, g.wsum, kc)); break;
+                    case MeasureVar::Wsum: std::fprintf(f, ";%.9g", g.wsum); break;
                 }
             }
-        std::fprintf(f, "%s\n", h.c_str());
-        for (const auto& [idx, path] : parts) {
-            const io::PartData d = io::readPartH5(path);
-            const std::vector<PointSums> s = measurePart(d, pts, o.grid, path);
-            std::fprintf(f, "%d;%.10g", idx, d.time);
-            const double kc = o.kclimit;
-            for (MeasureVar v : o.vars)
-                for (const PointSums& q : s) {
-                    const physics::GaugeSample& g = q.g;
-                    switch (v) {
-                        case MeasureVar::Press: std::fprintf(f, ";%.9g", physics::shepard(g.press, g.wsum, kc)); break;
-                        case MeasureVar::Vel:
-                            std::fprintf(f, ";%.9g;%.9g;%.9g", physics::shepard(g.vx, g.wsum, kc),
-                                         physics::shepard(g.vy, g.wsum, kc), physics::shepard(g.vz, g.wsum, kc));
-                            break;
-                        case MeasureVar::Rhop: std::fprintf(f, ";%.9g", physics::shepard(q.rhop, g.wsum, kc)); break;
-                        case MeasureVar::Wsum: std::fprintf(f, ";%.9g", g.wsum); break;
-                    }
-                }
-            std::fprintf(f, "\n");
-            ++rows;
-        }
-        if (std::fclose(f) != 0) {
-            f = nullptr;
-            throw Error(o.savecsv + ": write failed");
-        }
-        f = nullptr;
-        std::error_code ec;
-        fs::rename(tmp, o.savecsv, ec);
-        if (ec) throw Error(o.savecsv + ": cannot rename " + tmp + ": " + ec.message());
-    } catch (...) {
-        if (f) std::fclose(f);
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw;
+        std::fprintf(f, "\n");
+        ++rows;
     }
+    out.commit();
     log << "measure: " << rows << " row(s) written to " << o.savecsv << "\n";
     return rows;
 }

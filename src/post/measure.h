@@ -22,6 +22,7 @@
 #include "core/vec3.h"
 #include "io/part_output.h"
 #include "physics/gauges.h"
+#include "post/part_series.h"
 
 namespace seaspring::post {
 
@@ -53,10 +54,6 @@ struct MeasureGrid {
 /// file without /mass, unknown kernel, inconsistent press) or the grid does not fit.
 std::vector<PointSums> measurePart(const io::PartData& d, const std::vector<Vec3d>& points,
                                    const MeasureGrid& grid = {}, const std::string& what = "part file");
-
-/// The part files OUTDIR/data/part_NNNN.h5 with first <= NNNN <= last (negative: no bound),
-/// ascending: (index, path). Throws when OUTDIR/data is missing or holds none in the range.
-std::vector<std::pair<int, std::string>> listPartFiles(const std::string& dirin, int first, int last);
 
 struct MeasureOptions {
     std::string dirin;    ///< the run's OUTDIR (holds data/part_NNNN.h5)

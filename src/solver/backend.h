@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/checkpoint_data.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/gauges.h"
@@ -152,6 +153,14 @@ public:
     /// Every allocated particle field except the sort scratch, in id order (tests compare
     /// backends field by field after each phase).
     virtual void downloadFields(HostParticles& out) = 0;
+    /// The whole state a restart needs, exactly (checkpoint_data.h, names under "engine/"):
+    /// the particle fields flagged kCheckpoint in their current (sorted) order, the cell
+    /// ranges and near flags of the last divide, the motions of the coming step, the solids'
+    /// arrays and the divide counters. Between two steps only.
+    virtual void saveState(CheckpointData& out) = 0;
+    /// Replaces the state set by init() with a saved one of the same case (after init(), in
+    /// place of the first divide); the run then continues with the same bits.
+    virtual void loadState(const CheckpointData& in) = 0;
 };
 
 std::unique_ptr<Backend> makeCpuBackend(int threads);

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "io/checkpoint_file.h"
 #include "physics/vcpm.h"
 
 namespace seaspring::solver {
@@ -78,9 +79,12 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
     return r;
 }
 
-LedgerFile::LedgerFile(const std::string& outdir)
-    : path_((std::filesystem::path(outdir) / "ledger.csv").string()), f_(path_) {
+LedgerFile::LedgerFile(const std::string& outdir, long long resume_offset)
+    : path_((std::filesystem::path(outdir) / "ledger.csv").string()) {
+    const bool cont = resume_offset >= 0 && io::cutForResume(path_, resume_offset);
+    f_.open(path_, cont ? std::ios::app : std::ios::trunc);
     if (!f_) throw Error(path_ + ": cannot create the coupling ledger");
+    if (cont) return;
     f_ << "time;fluid_px;fluid_py;fluid_pz;solid_px;solid_py;solid_pz;force_x;force_y;force_z;"
           "impulse_x;impulse_y;impulse_z;work;solid_kinetic;solid_elastic;solid_potential;fluid_kinetic;"
           "wall_fx;wall_fy;wall_fz\n";

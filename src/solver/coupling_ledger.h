@@ -40,8 +40,12 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
 /// and DualSPHysics' CSV files are.
 class LedgerFile {
 public:
-    explicit LedgerFile(const std::string& outdir);
+    /// `resume_offset` >= 0: a restarted run: the file is cut back to that many bytes (what it
+    /// held at the checkpoint) and continued; a new file when it is not there.
+    explicit LedgerFile(const std::string& outdir, long long resume_offset = -1);
     void add(const LedgerRow& r);
+    /// Bytes written so far (a restart file keeps it).
+    long long offset() { return (long long)f_.tellp(); }
     const std::string& path() const { return path_; }
 
 private:

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.h"
 #include "solver/backend.h"
 #include "solver/force_passes.h"
 #include "solver/launch.h"
@@ -216,6 +217,75 @@ public:
         if (solid_.n > 0) solid_.download(out);
     }
     void downloadFields(HostParticles& out) override { downloadIdOrder(out, ~0u, 0u); }
+
+    void saveState(CheckpointData& out) override {
+        exec_.synchronize();
+        auto put = [&](const std::string& name, auto& buf) {
+            std::vector<std::remove_pointer_t<decltype(buf.data())>> host;
+            copyToHost(buf, host);
+            out.putArray("engine/" + name, host);
+        };
+        p_.forEachNamedField([&](const char* name, auto& buf, unsigned flags) {
+            if ((flags & physics::kCheckpoint) && !buf.empty()) put(std::string("field/") + name, buf);
+        });
+        put("cell_start_bound", cs_bound_);
+        put("cell_start_fluid", cs_fluid_);
+        put("near", near_);
+        put("motions", motions_);
+        if (solid_.n > 0) {
+            put("solid_motions", solid_motions_);
+            solid_.forEachState([&](const char* name, auto& buf) { put(std::string("solid/") + name, buf); });
+            out.reals["engine/solid_t0"] = solid_.t0;
+            out.reals["engine/solid_span"] = solid_.span;
+        }
+        out.ints["engine/np"] = (long long)(setup_.nbound) + setup_.nfluid;
+        out.ints["engine/nbound"] = nbound_;
+        out.ints["engine/nfluid_active"] = nfluid_;
+        out.ints["engine/nsolid"] = solid_.n;
+        out.ints["engine/ncells"] = setup_.grid.cellCount();
+        out.ints["engine/sorted"] = sorted_ ? 1 : 0;
+        out.ints["engine/divides"] = (long long)counts_.divides;
+        out.ints["engine/sorts"] = (long long)counts_.sorts;
+    }
+
+    void loadState(const CheckpointData& in) override {
+        auto expect = [&](const char* name, long long want) {
+            const long long got = in.integer(std::string("engine/") + name);
+            if (got != want)
+                throw Error(in.source + ": restart file was written for another case or set-up (" + name + " " +
+                            std::to_string(got) + ", this run has " + std::to_string(want) + ")");
+        };
+        expect("np", (long long)(setup_.nbound) + setup_.nfluid);
+        expect("nbound", nbound_);
+        expect("nsolid", solid_.n);
+        expect("ncells", setup_.grid.cellCount());
+        auto get = [&](const std::string& name, auto& buf, bool same_size) {
+            using T = std::remove_pointer_t<decltype(buf.data())>;
+            const std::vector<T> host = in.getArray<T>("engine/" + name);
+            if (same_size && host.size() != buf.size())
+                throw Error(in.source + ": restart array '" + name + "' has " + std::to_string(host.size()) +
+                            " elements, this run has " + std::to_string(buf.size()) +
+                            " (a run with other options wrote it)");
+            assignFrom(buf, host);
+        };
+        p_.forEachNamedField([&](const char* name, auto& buf, unsigned flags) {
+            if ((flags & physics::kCheckpoint) && !buf.empty()) get(std::string("field/") + name, buf, true);
+        });
+        get("cell_start_bound", cs_bound_, true);
+        get("cell_start_fluid", cs_fluid_, true);
+        get("near", near_, true);
+        get("motions", motions_, false);
+        if (solid_.n > 0) {
+            get("solid_motions", solid_motions_, false);
+            solid_.forEachState([&](const char* name, auto& buf) { get(std::string("solid/") + name, buf, true); });
+            solid_.t0 = in.real("engine/solid_t0");
+            solid_.span = in.real("engine/solid_span");
+        }
+        nfluid_ = std::uint32_t(in.integer("engine/nfluid_active"));
+        sorted_ = in.integer("engine/sorted") != 0;
+        counts_.divides = (unsigned long long)in.integer("engine/divides");
+        counts_.sorts = (unsigned long long)in.integer("engine/sorts");
+    }
 
 private:
     /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.

@@ -9,6 +9,7 @@
 #include <ostream>
 
 #include "core/error.h"
+#include "io/checkpoint_file.h"
 #include "physics/gauges.h"
 
 namespace seaspring::solver {
@@ -69,8 +70,14 @@ struct GaugeSystem::Item {
     std::FILE* file = nullptr;
 };
 
-GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log)
+GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log,
+                         const CheckpointData* resume)
     : massfluid_(c.constants.massfluid), dim_(c.constants.dimensions), domain_minz_(c.domain_min.z) {
+    // A restart file of this case has as many gauges, in the same order (its keys are
+    // numbered); a file of another case is refused before (Simulation::resume checks the name).
+    if (resume && resume->integer("gauges/count") != (long long)c.gauges.gauges.size())
+        throw Error(resume->source + ": restart file has " + std::to_string(resume->integer("gauges/count")) +
+                    " gauges, the case " + std::to_string(c.gauges.gauges.size()));
     const model::GaugeSet& set = c.gauges;
     const double tout = c.params.time_out;
     const physics::CellGrid& g = s.grid;
@@ -191,12 +198,20 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
             any_output = true;
             const std::string path =
                 (fs::path(outdir) / "gauges" / ("Gauges" + std::string(fileKind(sp.kind)) + "_" + sp.name + ".csv")).string();
-            item.file = std::fopen(path.c_str(), "w");
+            const std::string key = "gauges/" + std::to_string(items_.size()) + "/";
+            const bool cont = resume && io::cutForResume(path, resume->integer(key + "offset"));
+            item.file = std::fopen(path.c_str(), cont ? "a" : "w");
             if (!item.file) throw Error(path + ": cannot write the gauge file");
-            std::fprintf(item.file, "%s\n", header(sp.kind));
+            if (!cont) std::fprintf(item.file, "%s\n", header(sp.kind));
+        }
+        if (resume) {
+            const std::string key = "gauges/" + std::to_string(items_.size()) + "/";
+            item.next_compute = resume->real(key + "next_compute");
+            item.next_output = resume->real(key + "next_output");
         }
         items_.push_back(std::move(it));
     }
+    if (resume) rows_ = resume->integer("gauges/rows");
     log << "  gauges: " << items_.size() << (any_output ? " (CSV in " + outdir + "/gauges)" : " (output off: nothing written)")
         << "\n";
 }
@@ -207,6 +222,23 @@ GaugeSystem::~GaugeSystem() {
 }
 
 void GaugeSystem::attach(Backend& b) const { b.setGauges(q_); }
+
+void GaugeSystem::save(CheckpointData& d) {
+    d.ints["gauges/count"] = (long long)items_.size();
+    d.ints["gauges/rows"] = rows_;
+    for (std::size_t k = 0; k < items_.size(); ++k) {
+        const Item& it = *items_[k];
+        const std::string key = "gauges/" + std::to_string(k) + "/";
+        d.reals[key + "next_compute"] = it.next_compute;
+        d.reals[key + "next_output"] = it.next_output;
+        long long offset = -1;
+        if (it.file) {
+            std::fflush(it.file);
+            offset = std::ftell(it.file);
+        }
+        d.ints[key + "offset"] = offset;
+    }
+}
 
 double GaugeSystem::nextTime() const {
     double t = kNever;

@@ -26,7 +26,11 @@ class GaugeSystem {
 public:
     /// Resolves every gauge of `c.gauges` (points, rows, marker particles, force blocks);
     /// throws seaspring::Error naming the resolved case file and line for a bad target.
-    GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log);
+    /// `resume`: a restart file's data: the gauges continue its timing, and their CSV files in
+    /// OUTDIR are cut back to what they held at the checkpoint and continued (new files when
+    /// they are not there).
+    GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log,
+                const CheckpointData* resume = nullptr);
     ~GaugeSystem();
     GaugeSystem(const GaugeSystem&) = delete;
     GaugeSystem& operator=(const GaugeSystem&) = delete;
@@ -41,6 +45,8 @@ public:
     void flush();
     /// Rows written so far (all gauges).
     long long rows() const { return rows_; }
+    /// The gauges' timing and file lengths into a restart file ("gauges/"; flushes the files).
+    void save(CheckpointData& d);
 
     struct Item;
 

@@ -28,6 +28,15 @@ struct ParticleStore {
 #undef SEASPRING_STORE_VISIT
     }
 
+    /// Calls f(name, buffer, flags) for every field, in table order.
+    template <class F>
+    void forEachNamedField(F&& f) {
+        using namespace ::seaspring::physics;
+#define SEASPRING_STORE_NAMED(name, type, need, flags) f(#name, name, unsigned(flags));
+        SEASPRING_PARTICLE_FIELDS(SEASPRING_STORE_NAMED)
+#undef SEASPRING_STORE_NAMED
+    }
+
     /// Pointers to the arrays (null for a field this run does not allocate).
     physics::ParticleView view() {
         physics::ParticleView v;

@@ -44,9 +44,9 @@ std::string runLogPath(const std::string& outdir) {
 }
 }  // namespace
 
-RunLog::RunLog(const std::string& outdir, std::ostream& console)
+RunLog::RunLog(const std::string& outdir, std::ostream& console, bool append)
     : path_(runLogPath(outdir)),
-      file_(path_, std::ios::out | std::ios::trunc),
+      file_(path_, std::ios::out | (append ? std::ios::app : std::ios::trunc)),
       tee_(console.rdbuf(), file_.rdbuf()),
       out_(&tee_) {
     if (!file_)

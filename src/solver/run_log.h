@@ -32,9 +32,10 @@ private:
 /// The solver's log: `out()` writes to the console stream and to OUTDIR/Run.out.
 class RunLog {
 public:
-    /// Creates OUTDIR (if needed) and OUTDIR/Run.out (replacing an older one). Throws
-    /// seaspring::Error naming the file when it cannot be created.
-    RunLog(const std::string& outdir, std::ostream& console);
+    /// Creates OUTDIR (if needed) and OUTDIR/Run.out (replacing an older one; `append`: a
+    /// restarted run continuing in OUTDIR adds to it). Throws seaspring::Error naming the
+    /// file when it cannot be created.
+    RunLog(const std::string& outdir, std::ostream& console, bool append = false);
     RunLog(const RunLog&) = delete;
     RunLog& operator=(const RunLog&) = delete;
 

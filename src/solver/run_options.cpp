@@ -98,6 +98,11 @@ void declareOptions(CLI::App& app) {
     value("--sv");
     optional("--svres");
     value("--nsteps");
+    value("--blowupcheck");
+    flag("--overwrite");
+    value("--checkpoint");
+    CLI::Option* restart = value("--restart");
+    value("--partbegin")->excludes(restart);
     value("--cellmode");
     value("--skin");
     value("--vcpmsubsteps");
@@ -194,7 +199,7 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
         } else if (name == "cpu") {
             o.backend = B::Cpu;
         } else if (name == "threads") {
-            o.threads = int(toInteger(g, 1, INT_MAX));
+            o.threads = int(toInteger(g, 1, kMaxThreads));
         } else if (name == "tmax") {
             o.tmax = toDouble(g, Range::Positive);
         } else if (name == "tout") {
@@ -205,6 +210,15 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (g.has_value) toInteger(g, 0, 1);  // accepted for DualSPHysics command lines
         } else if (name == "nsteps") {
             o.nsteps = toInteger(g, 0, LLONG_MAX);
+        } else if (name == "blowupcheck") {
+            o.blowup_check_every = toInteger(g, 0, LLONG_MAX);
+        } else if (name == "overwrite") {
+            o.overwrite = true;
+        } else if (name == "checkpoint") {
+            o.checkpoint_interval = toDouble(g, Range::Positive);
+        } else if (name == "restart" || name == "partbegin") {
+            if (g.value.empty()) usageError(g.arg + ": the restart file is missing");
+            o.restart_file = g.value;
         } else if (name == "cellmode") {
             static const char* const kModes[] = {"auto", "full", "h", "third", "quarter"};  // index = cell_div
             o.cell_div = -1;
@@ -301,12 +315,25 @@ arguments after "--" are taken as OUTDIR/NAME and OUTDIR even when they start wi
 Backend:
   -gpu[:ID]            run on CUDA device ID (default 0); an error when no GPU is usable
   -cpu                 run on the CPU (OpenMP)
-  -threads:N           OpenMP threads, N >= 1 (default: all cores)
+  -threads:N           OpenMP threads, 1 <= N <= 1024 (default: all cores)
                        (without -gpu or -cpu: the GPU when one is usable, else the CPU)
 Run control:
   -tmax:T              simulated time T > 0 [s] (overrides TimeMax)
   -tout:T              output interval T > 0 [s] (overrides TimeOut)
   -nsteps:N            stop after N >= 0 time steps (tests, benchmarks)
+  -overwrite           OUTDIR holds an earlier run: remove its files (Run.out, run.json,
+                       parts.xdmf, data/, vtk/, gauges/, ledger.csv) and run; without it
+                       such an OUTDIR is refused (the case files there are kept)
+  -checkpoint:T        write OUTDIR/restart.h5 (atomically, replacing the last one) every
+                       T > 0 [s] of simulated time; SIGINT/SIGTERM and a file named
+                       TERMINATE in OUTDIR (as DualSPHysics) also write one, then stop
+  -restart:FILE        continue the run saved in restart file FILE (alias -partbegin:FILE):
+                       same case, same options; the result has the same bits as the run
+                       that was not interrupted. In the OUTDIR it was written to, the part
+                       files, gauge files, ledger and Run.out are continued from it
+  -blowupcheck:N       scan the whole state for a blow-up every N >= 0 steps (default
+                       100; 0: only at output times). Fluid loss (MinFluidStop) and dt
+                       stuck at DtMin are checked after every step
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
                        files in OUTDIR/vtk), none
   -svres[:0|1]         accepted for DualSPHysics command lines; run.json is always written
@@ -350,9 +377,13 @@ Other:
 Each option may be given once; -gpu/-cpu, -symplectic/-verlet, -wendland/-cubic and the
 three viscosity options exclude each other.
 
-Output: OUTDIR/parts.xdmf (ParaView time series of OUTDIR/data/part_NNNN.h5) and
-OUTDIR/run.json (run summary).
-Exit codes: 0 success, 2 bad command line or input, 1 failure during the run.
+Output: OUTDIR/parts.xdmf (ParaView time series of OUTDIR/data/part_NNNN.h5),
+OUTDIR/run.json (run summary, written on every exit once the run has started) and
+OUTDIR/Run.out (the console).
+Exit codes: 0 success; 2 bad command line or input; 1 failure during the run (a blow-up:
+run.json's "blowup" says which particles, where, which quantity and the likely option; the
+last good state is kept as a part file); 130 stopped by SIGINT, 143 by SIGTERM (run.json
+and the last state written).
 )";
 }
 

@@ -19,11 +19,15 @@
 
 namespace seaspring::solver {
 
+/// The most OpenMP threads -threads accepts (libgomp fails far above the core counts of any
+/// machine).
+constexpr int kMaxThreads = 1024;
+
 struct RunOptions {
     enum class Backend { Auto, Gpu, Cpu };
     Backend backend = Backend::Auto;  ///< Auto: the GPU when one is usable, else the CPU
     int gpu_id = 0;
-    int threads = 0;  ///< OpenMP threads; 0 = all cores
+    int threads = 0;  ///< OpenMP threads; 0 = all cores; at most kMaxThreads
     std::string case_path, outdir;
     bool save_h5 = true, save_vtk = false;
     std::optional<double> tmax, tout, visco, visco_bound_factor, ddt_value, cfl, dt_fixed;
@@ -36,6 +40,15 @@ struct RunOptions {
     std::optional<double> skin;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
+    /// -blowupcheck:N: scan the whole state for a blow-up every N steps (0: only at outputs);
+    /// blowup_check.h.
+    long long blowup_check_every = 100;
+    bool overwrite = false;  ///< -overwrite: clear an earlier run's files from OUTDIR (output_dir.h)
+    /// -checkpoint:T: write OUTDIR/restart.h5 every T > 0 of simulated time (checkpoint.h);
+    /// a stop signal or a TERMINATE file in OUTDIR writes one too. 0: only those.
+    double checkpoint_interval = 0;
+    /// -restart:FILE (alias -partbegin:FILE): continue the run saved in a restart file.
+    std::string restart_file;
     double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none
     bool quiet = false;
     bool help = false, version = false;  ///< set alone: the rest is not parsed

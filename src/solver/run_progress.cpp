@@ -30,7 +30,7 @@ void RunProgress::afterStep(double t, long long step, double dt, std::uint32_t a
     char line[256];
     std::snprintf(line, sizeof line,
                   "t=%.5f/%.4g s  steps=%lld  dt=%.3e  %.1f steps/s  %.2f ns/particle/step  "
-                  "fluid=%u  dtmin-hits=%lld  ETA %.0f s\n",
+                  "fluid=%u  dtmin-hits=%lld  ETA %.3g s\n",
                   t, tmax_, step, dt, sps, ns, active_fluid, dtmin_hits, eta);
     log_ << line << std::flush;
 }

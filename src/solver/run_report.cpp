@@ -53,9 +53,55 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
         j.value("substeps", s.solid_substeps);
         j.value("max_substeps_per_step", s.omega_max);
         j.value("solid_dt_s", s.solid_dt);
+        j.beginArray("bodies");
+        for (const SolidOutside& o : s.solids_outside) {
+            j.beginObject();
+            j.value("mkbound", o.mkbound);
+            j.value("particles", static_cast<long long>(o.particles));
+            j.value("outside_domain", static_cast<long long>(o.outside));
+            j.value("outside_domain_most", static_cast<long long>(o.most));
+            j.value("first_outside_time_s", o.first_time);
+            j.endObject();
+        }
+        j.endArray();
         j.endObject();
     }
     j.value("stop_reason", s.stop_reason);
+    j.value("exit_code", s.exit_code);
+    j.value("checkpoints", s.checkpoints);
+    if (!s.last_checkpoint.empty()) j.value("last_checkpoint", s.last_checkpoint);
+    if (!s.restarted_from.empty()) {
+        j.value("restarted_from", s.restarted_from);
+        j.value("restart_time_s", s.restart_time);
+    }
+    if (s.blowup) {
+        const BlowupDiagnosis& d = *s.blowup;
+        j.beginObject("blowup");
+        j.value("quantity", d.quantity);
+        j.value("message", d.message);
+        j.value("likely_option", d.likely_option);
+        j.value("time_s", d.time);
+        j.value("step", d.step);
+        j.value("value", d.value);
+        j.value("bound", d.bound);
+        j.value("count", static_cast<unsigned long long>(d.count));
+        j.beginArray("particles");
+        for (const BlowupParticle& p : d.particles) {
+            j.beginObject();
+            j.value("id", static_cast<long long>(p.id));
+            j.beginArray("pos");
+            j.value(p.pos.x);
+            j.value(p.pos.y);
+            j.value(p.pos.z);
+            j.endArray();
+            j.value("value", p.value);
+            j.endObject();
+        }
+        j.endArray();
+        j.value("last_good_output", s.last_good_output);
+        j.value("last_good_time_s", s.last_good_time);
+        j.endObject();
+    }
     j.value("state_hash", s.state_hash);
     j.endObject();
     io::writeTextFileAtomic(path, j.str() + "\n");
@@ -64,8 +110,8 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
 void printSummary(std::ostream& os, const RunSummary& s) {
     char line[512];
     std::snprintf(line, sizeof line,
-                  "Finished (%s): %lld steps to t=%.6g s in %.3f s wall (loop %.3f s), %.2f ns/particle/step\n",
-                  s.stop_reason.c_str(), s.steps, s.physical_time, s.wall_time, s.loop_time,
+                  "%s (%s): %lld steps to t=%.6g s in %.3f s wall (loop %.3f s), %.2f ns/particle/step\n",
+                  s.exit_code == 0 ? "Finished" : "Stopped", s.stop_reason.c_str(), s.steps, s.physical_time, s.wall_time, s.loop_time,
                   s.ns_per_particle_step);
     os << line;
     std::snprintf(line, sizeof line,
@@ -82,6 +128,14 @@ void printSummary(std::ostream& os, const RunSummary& s) {
                       static_cast<unsigned long long>(s.broken_bonds), s.solid_substeps, s.solid_dt, s.omega_max);
         os << line;
     }
+    for (const SolidOutside& o : s.solids_outside)
+        if (o.most > 0) {
+            std::snprintf(line, sizeof line,
+                          "Solid mkbound=%d: %u of %u particles outside the domain at the end (at most %u, first at "
+                          "t=%.4g s)\n",
+                          o.mkbound, o.outside, o.particles, o.most, o.first_time);
+            os << line;
+        }
     os << "State hash: " << s.state_hash << "\n";
 }
 

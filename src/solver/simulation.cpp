@@ -10,12 +10,15 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "io/checkpoint_file.h"
 #include "io/part_output.h"
 #include "io/vtu_writer.h"
 #include "io/xdmf_series.h"
 #include "physics/eos_tait.h"
 #include "solver/coupling_ledger.h"
 #include "solver/gauge_system.h"
+#include "solver/run_limits.h"
+#include "solver/simulation_parts.h"
 
 namespace seaspring::solver {
 
@@ -193,24 +196,23 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
     return s;
 }
 
-struct Simulation::Output {
-    io::XdmfSeries xdmf;
-    explicit Output(const std::string& dir) : xdmf(dir) {}
-};
-
-struct Simulation::Ledger {
-    LedgerFile file;
-    explicit Ledger(const std::string& dir) : file(dir) {}
-};
-
 Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr<Backend> backend,
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
+    checkRunMemory(c);
     setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o));
+    checkSolidSubstep(c, setup_.solid);
+    health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
+    if (!opt_.restart_file.empty()) {
+        resume_ = std::make_shared<const CheckpointData>(io::readCheckpointFile(opt_.restart_file));
+        continuing_ = restartContinuesIn(opt_.restart_file, opt_.outdir);
+    }
+    const CheckpointData* cont = continuing_ ? resume_.get() : nullptr;  // files continued
     if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir);
-    if (!setup_.solid.empty()) ledger_ = std::make_shared<Ledger>(opt_.outdir);
-    if (!c.gauges.empty()) gauges_ = std::make_shared<GaugeSystem>(c, setup_, opt_.outdir, log_);
+    if (!setup_.solid.empty())
+        ledger_ = std::make_shared<Ledger>(opt_.outdir, cont ? cont->integer("ledger/offset") : -1);
+    if (!c.gauges.empty()) gauges_ = std::make_shared<GaugeSystem>(c, setup_, opt_.outdir, log_, resume_.get());
     sum_.case_name = c.name;
     sum_.backend = backend_->name();
     sum_.device = backend_->deviceName();
@@ -240,9 +242,70 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     }
 }
 
-void Simulation::output(double time, long long step) {
+bool Simulation::healthy(const HostState& st, double time, long long step) {
+    Health& h = *health_;
+    std::optional<BlowupDiagnosis> d = h.check.scan(st, time, step, h.dt);
+    for (const std::string& w : h.check.takeWarnings()) log_ << w << "\n";
+    sum_.solids_outside = h.check.solidsOutside();
+    if (d) {
+        blownUp(std::move(*d));
+        return false;
+    }
+    h.last_good = st;
+    h.good_time = time;
+    h.good_step = step;
+    return true;
+}
+
+bool Simulation::checkStep(double t, long long step, double dt, std::uint32_t active, long long dtmin_hits,
+                           bool output_due) {
+    Health& h = *health_;
+    h.dt = dt;
+    if (std::optional<BlowupDiagnosis> d = h.check.afterStep(t, step, dt, active, dtmin_hits)) {
+        blownUp(std::move(*d));
+        return false;
+    }
+    if (output_due || !h.check.scanDue(step)) return true;
     HostState st;
     backend_->download(st);
+    return healthy(st, t, step);
+}
+
+void Simulation::stepFailed(double t, long long step, const std::string& what) {
+    blownUp(health_->check.nonFiniteStep(t, step, what));
+}
+
+double Simulation::lastOutputTime() const { return health_->written_time; }
+
+void Simulation::blownUp(BlowupDiagnosis d) {
+    Health& h = *health_;
+    if (d.particles.empty()) {  // a per-step diagnosis: name the particles from the state
+        HostState st;
+        backend_->download(st);
+        h.check.describe(d, st);
+    }
+    log_ << "error: " << describeBlowup(d) << "\n";
+    if (h.good_time > h.written_time) {
+        writeOutput(h.last_good, h.good_time, h.good_step, false);
+        log_ << "  the last good state (t=" << h.good_time << " s, step " << h.good_step << ") is written as "
+             << (h.written_file.empty() ? "the last output" : h.written_file) << "\n";
+    }
+    sum_.last_good_output = h.written_file;
+    sum_.last_good_time = h.written_time;
+    sum_.stop_reason = "blow-up: " + d.quantity;
+    sum_.exit_code = 1;
+    sum_.blowup = std::move(d);
+}
+
+bool Simulation::output(double time, long long step) {
+    HostState st;
+    backend_->download(st);
+    if (!healthy(st, time, step)) return false;
+    writeOutput(st, time, step, true);
+    return true;
+}
+
+void Simulation::writeOutput(const HostState& st, double time, long long step, bool ledger) {
     if (observer_) observer_(time, step, st);
     const std::size_t np = st.pos.size();
     std::vector<double> pos(3 * np);
@@ -263,8 +326,9 @@ void Simulation::output(double time, long long step) {
     std::vector<float> disp, strain, damage;
     std::vector<std::uint8_t> broken;
     if (!setup_.solid.empty()) {
-        checkSolidFinite(st, time);
         solidFields(st, disp, strain, broken, damage);
+    }
+    if (!setup_.solid.empty() && ledger) {
         const Vec3d g = case_.constants.gravity;
         std::vector<physics::Double3> boundary_force;
         if (case_.nfluid > 0) backend_->boundaryForces(boundary_force);
@@ -296,6 +360,7 @@ void Simulation::output(double time, long long step) {
                        case_.constants.rhop0, case_.constants.dimensions, case_.constants.b};
         const std::string rel = io::writePartH5(opt_.outdir, f);
         out_->xdmf.add(rel, time, np, !disp.empty());
+        health_->written_file = rel;
     }
     if (opt_.save_vtk) {
         ParticleSet p = case_.particles;
@@ -321,6 +386,7 @@ void Simulation::output(double time, long long step) {
         io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
     }
     if (gauges_) gauges_->flush();
+    health_->written_time = time;
     ++out_index_;
     sum_.outputs = out_index_;
 }

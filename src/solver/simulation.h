@@ -8,16 +8,20 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "solver/backend.h"
+#include "solver/blowup_check.h"
 #include "solver/run_options.h"
 #include "solver/solver_case.h"
 
 namespace seaspring::solver {
 
 class GaugeSystem;
+class StepContext;
+class TimeStepper;
 struct StepCounters;
 
 /// What run.json reports.
@@ -43,6 +47,17 @@ struct RunSummary {
     int omega_max = 0;              ///< most sub-steps in one fluid step
     double solid_dt = 0;            ///< the solid sub-step limit VcpmDtCoef dp / c_S [s]
     std::uint64_t bonds = 0, clamp_bonds = 0, broken_bonds = 0;  ///< bonds counted once
+    std::vector<SolidOutside> solids_outside;  ///< per body: particles outside the domain
+    // How the run ended when it did not finish (exit code != 0).
+    int exit_code = 0;                       ///< 0, 1 (blow-up or error), 128 + signal
+    std::optional<BlowupDiagnosis> blowup;   ///< set when a blow-up stopped the run
+    // Restart files (-checkpoint, -restart).
+    int checkpoints = 0;            ///< restart files written
+    std::string last_checkpoint;    ///< the last one
+    std::string restarted_from;     ///< -restart: the file this run continued
+    double restart_time = -1;       ///< [s] it continued from
+    std::string last_good_output;            ///< blow-up: the part file holding the last good state
+    double last_good_time = -1;              ///< [s] of that state
 };
 
 /// Builds the backend's initial data from the case (particles in id order); cells of
@@ -62,6 +77,8 @@ public:
                std::ostream& log);
     /// Runs to TimeMax (or -nsteps), writing outputs; returns the summary (also run.json).
     RunSummary run();
+    /// The summary so far (after run() threw: what the run had reached).
+    const RunSummary& summary() const { return sum_; }
     /// The state at the end of run() (id order).
     const HostState& finalState() const { return final_; }
     /// Called at every output time (t = 0, each TimeOut, the end) with the state in id order,
@@ -70,16 +87,46 @@ public:
     void onOutput(OutputObserver f) { observer_ = std::move(f); }
 
 private:
-    void output(double time, long long step);
+    /// Downloads the state, scans it for a blow-up (blowup_check.h) and, when it is good,
+    /// writes it as the next output; returns false (nothing written, sum_.blowup set) when not.
+    bool output(double time, long long step);
+    /// Writes `st` as the next output (part files, ledger row when `ledger`, gauges flushed).
+    void writeOutput(const HostState& st, double time, long long step, bool ledger);
+    /// The blow-up scan of a downloaded state; on a good state keeps it as the last good one.
+    bool healthy(const HostState& st, double time, long long step);
+    /// The blow-up checks after a step (blowup_check.h): the per-step ones, then a scan of the
+    /// state every -blowupcheck steps unless an output (which scans) is due; they only read the
+    /// state. Returns false when the run blew up.
+    bool checkStep(double t, long long step, double dt, std::uint32_t active, long long dtmin_hits, bool output_due);
+    /// A step whose dt was not finite (NonFiniteStep's message).
+    void stepFailed(double t, long long step, const std::string& what);
+    /// Time of the last output written (-1: none).
+    double lastOutputTime() const;
+    /// Ends a run on a blow-up: logs the diagnosis, writes the last good state when it is newer
+    /// than the last output, sets the summary's stop reason and exit code.
+    void blownUp(BlowupDiagnosis d);
     /// Per-particle solid fields of the part files (zero for other particles).
     void solidFields(const HostState& st, std::vector<float>& disp, std::vector<float>& strain,
                      std::vector<std::uint8_t>& broken, std::vector<float>& damage) const;
-    /// Stops the run (seaspring::Error) when a solid position is not finite.
-    void checkSolidFinite(const HostState& st, double time) const;
     /// Broken bonds (each solid-solid bond counted once) in `st`.
     std::uint64_t brokenBonds(const HostState& st) const;
     /// After the loop: the last output when none was written, the final state, run.json's counts.
     void finish(double t, long long steps, double loop_time, const StepCounters& counters);
+
+    /// The time loop's own state, saved in restart files (simulation_checkpoint.cpp).
+    struct LoopState {
+        double t = 0, next_out = 0, next_checkpoint = 0;
+        long long step = 0;
+        bool warned_out = false;
+    };
+    /// Writes OUTDIR/restart.h5 (atomically) with everything the run needs to continue.
+    void saveCheckpoint(const LoopState& loop, const TimeStepper& stepper, const StepContext& ctx);
+    /// After Backend::init: the state of the restart file (resume_) in place of the start.
+    LoopState resume(TimeStepper& stepper, StepContext& ctx);
+    /// The next checkpoint time after `t` (-checkpoint; a huge number without one).
+    double nextCheckpoint(double t) const;
+    /// A file named TERMINATE in OUTDIR (DualSPHysics' way to end a run cleanly).
+    bool terminateRequested() const;
 
     const SolverCase& case_;
     RunOptions opt_;
@@ -94,8 +141,16 @@ private:
     struct Ledger;
     std::shared_ptr<Ledger> ledger_;
     std::shared_ptr<GaugeSystem> gauges_;  ///< null when the case has no gauges
+    struct Health;
+    std::shared_ptr<Health> health_;  ///< the blow-up check and the last good state
     OutputObserver observer_;
+    std::shared_ptr<const CheckpointData> resume_;  ///< -restart: the restart file's data
+    bool continuing_ = false;  ///< -restart with the restart file in OUTDIR: its files are continued
 };
+
+/// Whether a restart continues in OUTDIR (part files, gauges, ledger, Run.out continued): the
+/// restart file lies in OUTDIR, as OUTDIR/restart.h5 written by -checkpoint does.
+bool restartContinuesIn(const std::string& restart_file, const std::string& outdir);
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
 std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin);

@@ -5,7 +5,11 @@
 ///        run summary at the end.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <optional>
 #include <ostream>
+#include <string>
 
 #include "solver/gauge_system.h"
 #include "solver/phase_timers.h"
@@ -13,9 +17,12 @@
 #include "solver/simulation.h"
 #include "solver/state_hash.h"
 #include "solver/step_context.h"
+#include "solver/stop_signal.h"
 #include "solver/time_steppers.h"
 
 namespace seaspring::solver {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -25,6 +32,19 @@ bool warnExcludedFluid(std::ostream& log, const SolverCase& c, std::uint32_t act
     log << "warning: " << (c.nfluid - active) << " fluid particles excluded (more than " << c.params.wrn_parts_out
         << "% of the fluid)\n";
     return true;
+}
+
+/// The output time after `t`: TimeOut added to `next` until it passes t (the same sums as
+/// always); when t is so far ahead that this would take more than a million additions or would
+/// stop growing (dt = 1e30, a solid sub-step of 1e149 s), the next multiple of TimeOut after t.
+double nextOutputTime(double next, double t, double tout) {
+    if ((t - next) / tout < 1e6) {
+        while (next <= t + 1e-9 * tout) next += tout;
+        return next;
+    }
+    const double n = std::floor(t / tout) + 1;
+    const double k = n * tout;
+    return k > t ? k : std::nextafter(t, HUGE_VAL);
 }
 
 }  // namespace
@@ -39,18 +59,34 @@ RunSummary Simulation::run() {
     StepContext ctx(*backend_, case_, setup_, opt_.solid_substeps, timers);
 
     backend_->init(setup_);
-    ctx.placeMoving(0.0, initialDt(case_));
-    backend_->divide(false);
-    if (gauges_) {
-        gauges_->attach(*backend_);
-        gauges_->evaluate(0.0, *backend_);
-    }
-    output(0.0, 0);
-
     const std::unique_ptr<TimeStepper> stepper = makeTimeStepper(ctx);
-    double t = 0, next_out = tout;
-    long long step = 0;
-    bool warned_out = false;
+    LoopState loop;
+    if (resume_) {  // -restart: the saved state in place of the start (simulation_checkpoint.cpp)
+        loop = resume(*stepper, ctx);
+        sum_.restarted_from = resume_->source;
+        sum_.restart_time = loop.t;
+        if (gauges_) gauges_->attach(*backend_);
+        std::error_code ec;
+        if (terminateRequested() && fs::remove(fs::path(opt_.outdir) / "TERMINATE", ec))
+            log_ << "  removed OUTDIR/TERMINATE, which ended the run this one continues\n";
+    } else {
+        ctx.placeMoving(0.0, initialDt(case_));
+        backend_->divide(false);
+        if (gauges_) {
+            gauges_->attach(*backend_);
+            gauges_->evaluate(0.0, *backend_);
+        }
+        if (!output(0.0, 0)) {  // a state that is not finite from the start
+            finish(0.0, 0, 0.0, ctx.counters());
+            return sum_;
+        }
+        loop.next_out = tout;
+        loop.next_checkpoint = nextCheckpoint(0.0);
+    }
+    double t = loop.t, next_out = loop.next_out, next_checkpoint = loop.next_checkpoint;
+    long long step = loop.step;
+    bool warned_out = loop.warned_out;
+    auto loopState = [&] { return LoopState{t, next_out, nextCheckpoint(t), step, warned_out}; };
     RunProgress progress(log_, opt_.quiet ? 0.0 : opt_.progress_interval, tmax, sum_.np);
     sum_.stop_reason = "TimeMax reached";
     while (t < tmax - 1e-12 * tmax) {
@@ -58,9 +94,22 @@ RunSummary Simulation::run() {
             sum_.stop_reason = "step limit (-nsteps) reached";
             break;
         }
+        if (const int sig = stopSignal()) {  // SIGINT/SIGTERM (stop_signal.h): end cleanly
+            sum_.stop_reason = std::string("stopped by ") + stopSignalName(sig);
+            sum_.exit_code = 128 + sig;
+            saveCheckpoint(loopState(), *stepper, ctx);  // before the extra output: -restart continues the run
+            if (lastOutputTime() < t) output(t, step);  // the state it stopped at
+            break;
+        }
         const StepWindow window{std::min({next_out, tmax, gauges_ ? gauges_->nextTime() : tmax}),
                                 max_steps >= 0 ? max_steps - step : -1};
-        const StepResult done = stepper->advance(t, window);
+        StepResult done;
+        try {
+            done = stepper->advance(t, window);
+        } catch (const NonFiniteStep& e) {  // the dt of a force evaluation: a blow-up
+            stepFailed(t, step, e.what());
+            break;
+        }
         t = done.time;
         step += done.steps;
         sum_.dt_last = done.dt;
@@ -68,15 +117,23 @@ RunSummary Simulation::run() {
         if (gauges_) gauges_->evaluate(t, *backend_);
         const std::uint32_t active = backend_->activeFluid();
         if (!warned_out) warned_out = warnExcludedFluid(log_, case_, active);
-        if (t >= next_out - 1e-9 * tout || t >= tmax) {
-            output(t, step);
-            while (next_out <= t + 1e-9 * tout) next_out += tout;
-        }
-        if (p.min_fluid_stop > 0 && case_.nfluid > 0 && double(active) < p.min_fluid_stop * case_.nfluid) {
-            sum_.stop_reason = "fluid below MinFluidStop";
-            break;
+        const bool output_due = t >= next_out - 1e-9 * tout || t >= tmax;
+        if (!checkStep(t, step, done.dt, active, ctx.counters().dtmin_hits, output_due)) break;
+        if (output_due) {
+            if (!output(t, step)) break;
+            next_out = nextOutputTime(next_out, t, tout);
         }
         progress.afterStep(t, step, done.dt, active, ctx.counters().dtmin_hits);
+        if (t >= next_checkpoint - 1e-9 * opt_.checkpoint_interval) {  // -checkpoint
+            saveCheckpoint(loopState(), *stepper, ctx);
+            next_checkpoint = nextCheckpoint(t);
+        }
+        if (terminateRequested()) {  // DualSPHysics' TERMINATE file: save, then stop cleanly
+            saveCheckpoint(loopState(), *stepper, ctx);
+            if (lastOutputTime() < t) output(t, step);
+            sum_.stop_reason = "TERMINATE file in OUTDIR";
+            break;
+        }
     }
     const double loop_time = progress.elapsed();
     timers.report(log_, step);
@@ -86,7 +143,7 @@ RunSummary Simulation::run() {
 }
 
 void Simulation::finish(double t, long long step, double loop_time, const StepCounters& counters) {
-    if (out_index_ == 0 || sum_.outputs == 0) output(t, step);
+    if ((out_index_ == 0 || sum_.outputs == 0) && !sum_.blowup) output(t, step);
     if (gauges_) {
         gauges_->flush();
         sum_.gauge_rows = gauges_->rows();

@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file simulation_solids.cpp
-/// \brief The VCPM parts of a run's outputs and summary (see simulation.h): the finiteness
-///        check, broken-bond counts and the solid fields of the part files.
+/// \brief The VCPM parts of a run's outputs and summary (see simulation.h): broken-bond counts
+///        and the solid fields of the part files.
 #include <cstdio>
 
 #include "core/error.h"
@@ -10,20 +10,6 @@
 #include "solver/simulation.h"
 
 namespace seaspring::solver {
-
-void Simulation::checkSolidFinite(const HostState& st, double time) const {
-    const SolidSetup& so = setup_.solid;
-    for (std::uint32_t r = 0; r < so.nsolid; ++r) {
-        const physics::Double3 p = st.pos[so.first_solid + r];
-        if (p.x - p.x == 0.0 && p.y - p.y == 0.0 && p.z - p.z == 0.0) continue;
-        char t[32];
-        std::snprintf(t, sizeof t, "%.6g", time);
-        throw Error("the VCPM solid became unstable: particle " + std::to_string(so.first_solid + r) +
-                    " (mk " + std::to_string(case_.particles.mk[so.first_solid + r]) + ") has a non-finite position at t = " +
-                    t + " s; lower VcpmDtCoef (now " + std::to_string(case_.params.vcpm_dt_coef) +
-                    ", stable up to about 0.8 for Poisson's ratio >= 0) or check the material");
-    }
-}
 
 std::uint64_t Simulation::brokenBonds(const HostState& st) const {
     const SolidSetup& so = setup_.solid;

@@ -109,6 +109,25 @@ struct SolidArrays {
         return c;
     }
 
+    /// Calls f(name, buffer) for every array a run changes (the restart state; the others
+    /// come from the SolidSetup again).
+    template <class F>
+    void forEachState(F&& f) {
+        f("pos", pos);
+        f("pos_half", pos_half);
+        f("vel", vel);
+        f("vel0", vel0);
+        f("fluid_force", fluid_force);
+        f("sum", sum);
+        f("impulse", impulse);
+        f("work", work);
+        f("broken", broken);
+        f("slot", slot);
+        f("clamp_start", clamp_start);
+        f("clamp_end", clamp_end);
+        f("clamp_sum", clamp_sum);
+    }
+
     /// Snapshot of the midpoint coupling: positions, velocities and bond states ...
     void save() {
         copyBuffer(pos_saved, pos);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <initializer_list>
 
+#include "case/case_checks.h"
 #include "case/motion_xml.h"
 #include "case/xml_source.h"
 #include "core/error.h"
@@ -20,23 +21,6 @@ namespace fs = std::filesystem;
 using model::XmlSource;
 
 namespace {
-
-void checkConstants(const XmlSource& src, pugi::xml_node node, const model::CaseConstants& c,
-                    bool has_fluid, bool has_boundary) {
-    auto bad = [&](const char* name, double v, const std::string& why) {
-        src.fail(node.child(name), "value=" + shortText(v) + ": " + why);
-    };
-    if (c.dimensions != 2 && c.dimensions != 3) bad("dimensions", c.dimensions, "must be 2 or 3");
-    if (!(c.dp > 0)) bad("dp", c.dp, "must be > 0");
-    if (!(c.h > 0)) bad("h", c.h, "must be > 0");
-    if (!(c.speedsound > 0)) bad("speedsound", c.speedsound, "must be > 0");
-    if (!(c.b > 0)) bad("b", c.b, "must be > 0");
-    if (!(c.rhop0 > 0)) bad("rhop0", c.rhop0, "must be > 0");
-    if (c.gamma != 7) bad("gamma", c.gamma, "is not supported by seaspring (supported: 7)");
-    if (!(c.cflnumber > 0 && c.cflnumber <= 1)) bad("cflnumber", c.cflnumber, "must lie in (0, 1]");
-    if (has_fluid && !(c.massfluid > 0)) bad("massfluid", c.massfluid, "must be > 0");
-    if (has_boundary && !(c.massbound > 0)) bad("massbound", c.massbound, "must be > 0");
-}
 
 /// The particle file against the XML: counts, dimensions, dp, each particle's type and MK,
 /// positions inside the domain.
@@ -163,7 +147,7 @@ SolverCase loadSolverCase(const std::string& path) {
     c.nfluid = pb.nfluid;
     const pugi::xml_node constants = src.child(exec, "constants");
     c.constants = model::readConstants(src, constants);
-    checkConstants(src, constants, c.constants, c.nfluid > 0, c.nfixed + c.nmoving > 0);
+    model::checkCaseConstants(src, constants, constants, c.constants, c.nfluid > 0, c.nfixed + c.nmoving > 0);
 
     if (pugi::xml_node g = exec.child("special").child("gauges"); g && !XmlSource::isDisabled(g))
         c.gauges = model::readGauges(src, g, c.constants.dp, c.constants.h);
@@ -192,6 +176,7 @@ SolverCase loadSolverCase(const std::string& path) {
     io::CaseFileContents h5 = io::readCaseH5(c.h5_path);
     checkParticles(src, parts, block_nodes, constants, params.child("simulationdomain"), c, h5, np);
     checkSolids(src, exec, c, h5);
+    model::checkCaseHasWork(src, parts, c.nfluid, c.nsolid);
     c.particles = std::move(h5.particles);
     return c;
 }

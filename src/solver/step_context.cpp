@@ -10,11 +10,14 @@
 
 #include "core/error.h"
 #include "physics/vcpm.h"
+#include "solver/blowup_check.h"
 #include "solver/motion_player.h"
 
 namespace seaspring::solver {
 
 double initialDt(const SolverCase& c) {
+    if (!(c.constants.speedsound > 0))  // no fluid, no speed of sound: only moving walls use it
+        return c.params.dt_ini > 0 ? c.params.dt_ini : 1e-3 * c.params.time_out;
     return physics::initialDt(c.params.dt_ini, c.constants.h, c.constants.speedsound);
 }
 
@@ -42,8 +45,8 @@ double StepContext::limitDt(double dt) {
     if (!std::isfinite(dt)) {
         char v[64];
         std::snprintf(v, sizeof v, "%g", dt);
-        throw Error("the time step is not finite (dt = " + std::string(v) +
-                    "): the simulation became unstable; check the last output");
+        throw NonFiniteStep("the time step is not finite (dt = " + std::string(v) +
+                            "): the forces diverged");
     }
     if (dt < dtmin) {
         ++counters_.dtmin_hits;
@@ -58,6 +61,18 @@ void StepContext::advanceSolid(double time, double dt_fluid, bool ledger) {
     backend_.solidSteps(time, dt_fluid / omega, omega, motionsOver(time, dt_fluid), ledger);
     counters_.solid_substeps += omega;
     counters_.omega_max = std::max(counters_.omega_max, omega);
+}
+
+void StepContext::saveCounters(CheckpointData& d) const {
+    d.ints["counters/dtmin_hits"] = counters_.dtmin_hits;
+    d.ints["counters/solid_substeps"] = counters_.solid_substeps;
+    d.ints["counters/omega_max"] = counters_.omega_max;
+}
+
+void StepContext::loadCounters(const CheckpointData& d) {
+    counters_.dtmin_hits = d.integer("counters/dtmin_hits");
+    counters_.solid_substeps = d.integer("counters/solid_substeps");
+    counters_.omega_max = int(d.integer("counters/omega_max"));
 }
 
 }  // namespace seaspring::solver

@@ -20,7 +20,8 @@ struct StepCounters {
     int omega_max = 0;             ///< most solid sub-steps in one fluid step
 };
 
-/// The first dt: DtIni, or h / c0 when the case gives none.
+/// The first dt: DtIni, or h / c0 when the case gives none (a case without fluid and without a
+/// speed of sound: TimeOut / 1000; it only sets the first velocity of moving walls).
 double initialDt(const SolverCase& c);
 
 class StepContext {
@@ -35,6 +36,9 @@ public:
     const BackendSetup& setup() const { return setup_; }
     PhaseTimers& timers() const { return timers_; }
     const StepCounters& counters() const { return counters_; }
+    /// The counters into and out of a restart file ("counters/").
+    void saveCounters(CheckpointData& d) const;
+    void loadCounters(const CheckpointData& d);
     bool hasSolids() const { return !setup_.solid.empty(); }
 
     /// Motion objects' poses at `time` and `time + interval`.

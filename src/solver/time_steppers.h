@@ -31,6 +31,9 @@ public:
     virtual ~TimeStepper() = default;
     /// Advances the state from `time` (particles divided, moving boundaries placed).
     virtual StepResult advance(double time, const StepWindow& window) = 0;
+    /// What the scheme carries from one step to the next (restart files, "stepper/").
+    virtual void save(CheckpointData&) const {}
+    virtual void load(const CheckpointData&) {}
 };
 
 /// Symplectic position-Verlet: forces, predictor to n+1/2, divide, forces, corrector; the next
@@ -43,6 +46,8 @@ class SymplecticStepper final : public TimeStepper {
 public:
     SymplecticStepper(StepContext& ctx, bool midpoint);
     StepResult advance(double time, const StepWindow& window) override;
+    void save(CheckpointData& d) const override { d.reals["stepper/dt_next"] = dt_next_; }
+    void load(const CheckpointData& d) override { dt_next_ = d.real("stepper/dt_next"); }
 
 private:
     StepContext& ctx_;
@@ -56,6 +61,8 @@ class VerletStepper final : public TimeStepper {
 public:
     explicit VerletStepper(StepContext& ctx);
     StepResult advance(double time, const StepWindow& window) override;
+    void save(CheckpointData& d) const override { d.ints["stepper/steps_since_euler"] = steps_since_euler_; }
+    void load(const CheckpointData& d) override { steps_since_euler_ = int(d.integer("stepper/steps_since_euler")); }
 
 private:
     StepContext& ctx_;

@@ -186,8 +186,8 @@ TEST(GencaseCliErrors, NegativeDpInTheFile) {
 TEST(GencaseCliErrors, NegativeDpOnTheCommandLine) {
     const CliRun r = runCase("negative_dp_cli", test::caseXml(kPool), "-dp:-0.1");
     expectFailedCleanly(r);
-    expectContains(r.result.output, "gencase error: -dp: dp=-0.1");
-    expectContains(r.result.output, "must be > 0");
+    expectContains(r.result.output, "gencase error: -dp:-0.1: must be a number > 0");
+    expectContains(r.result.output, "(metres), written in full");
 }
 
 TEST(GencaseCliErrors, CaseWithoutParticles) {

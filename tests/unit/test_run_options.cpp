@@ -244,7 +244,7 @@ TEST(RunOptions, ValuesMustParseCompletely) {
     expectError({"-nsteps:0x10"}, "-nsteps:0x10: \"0x10\" is not an integer");
     expectError({"-nsteps:99999999999999999999"},
                 "-nsteps:99999999999999999999: 99999999999999999999 is too large");
-    expectError({"-threads:99999999999"}, "-threads:99999999999: 99999999999 is too large");
+    expectError({"-threads:99999999999"}, "-threads:99999999999: 99999999999 must be 1..1024");
     expectError({"-gpu:1x"}, "-gpu:1x: \"1x\" is not an integer");
     expectError({"-verlet:-"}, "-verlet:-: \"-\" is not an integer");
 }
@@ -253,7 +253,11 @@ TEST(RunOptions, ValuesMustLieInRange) {
     expectError({"-cfl:0"}, "-cfl:0: 0 must be in (0, 1]");
     expectError({"-cfl:1.0001"}, "-cfl:1.0001: 1.0001 must be in (0, 1]");
     expectError({"-cfl:-0.1"}, "-cfl:-0.1: -0.1 must be in (0, 1]");
-    expectError({"-threads:0"}, "-threads:0: 0 must be >= 1");
+    expectError({"-threads:0"}, "-threads:0: 0 must be 1..1024");
+    // 100000 threads crashed libgomp (SIGSEGV) before the run started.
+    expectError({"-threads:100000"}, "-threads:100000: 100000 must be 1..1024");
+    expectError({"-blowupcheck:-1"}, "-blowupcheck:-1: -1 must be >= 0");
+    expectError({"-overwrite:1"}, "-overwrite:1: -overwrite takes no value");
     expectError({"-gpu:-1"}, "-gpu:-1: -1 must be >= 0");
     expectError({"-ddt:4"},
                 "-ddt:4: 4 must be 0..3 (0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full)");
@@ -304,6 +308,8 @@ TEST(RunOptions, HelpListsEveryOption) {
                           "-ddtvalue:D",
                           "-cfl:C",
                           "-dtfixed:DT",
+                          "-overwrite",
+                          "-blowupcheck:N",
                           "--help",
                           "-version",
                           "OUTDIR/NAME OUTDIR"})
@@ -331,8 +337,20 @@ TEST(RunOptions, HelpListsEveryOption) {
                           "-ddt:1",
                           "-ddtvalue:1",
                           "-cfl:1",
-                          "-dtfixed:1"})
+                          "-dtfixed:1",
+                          "-overwrite",
+                          "-blowupcheck:10",
+                          "-threads:1024"})
         EXPECT_EQ(errorOf({a}), "") << a;
+}
+
+TEST(RunOptions, OverwriteAndBlowupCheck) {
+    const RunOptions d = parseWith({});
+    EXPECT_FALSE(d.overwrite);
+    EXPECT_EQ(d.blowup_check_every, 100);
+    const RunOptions o = parseWith({"-overwrite", "-blowupcheck:1"});
+    EXPECT_TRUE(o.overwrite);
+    EXPECT_EQ(o.blowup_check_every, 1);
 }
 
 TEST(RunOptions, ApplyOverridesLeavesUnsetParametersAlone) {

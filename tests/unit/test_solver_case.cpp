@@ -458,7 +458,7 @@ TEST(SolverCaseErrors, ParameterRangesAndSyntax) {
     expectParameterError("CoefDtMin", "0.05", "0", {"must be > 0"});
     expectParameterError("DtFixed", "0", "-1e-4", {"must be >= 0"});
     expectParameterError("RhopOutMax", "1300", "600", {"must exceed RhopOutMin=700"});
-    expectParameterError("MinFluidStop", "0", "2", {"must be <= 1"});
+    expectParameterError("MinFluidStop", "0.1", "2", {"must be <= 1"});
     expectParameterError("Kernel", "2", "1.5", {"expected an integer"});
     expectParameterError("TimeMax", "1", "abc", {"'abc' is not a number"});
 }

@@ -1,0 +1,231 @@
+// SeaSpring — MIT licence.
+/// \file blowup_check.cpp
+/// \brief Blow-up detection (see blowup_check.h).
+#include "solver/blowup_check.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/format.h"
+#include "physics/blowup_bounds.h"
+#include "physics/time_integration.h"
+#include "physics/vcpm.h"
+
+namespace seaspring::solver {
+
+namespace {
+
+constexpr std::size_t kNamedParticles = 5;  ///< particles a diagnosis lists
+
+std::string num(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", v);
+    return b;
+}
+
+bool finite3(const physics::Double3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite4(const physics::Float4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+/// Keeps the first kNamedParticles offenders and the largest value.
+struct Offenders {
+    std::vector<BlowupParticle> first;
+    std::uint64_t count = 0;
+    double worst = 0;
+    void add(std::uint32_t id, const physics::Double3& pos, double value) {
+        if (first.size() < kNamedParticles) first.push_back({id, pos, value});
+        ++count;
+        if (!(std::fabs(value) <= std::fabs(worst))) worst = value;  // NaN wins
+    }
+};
+
+}  // namespace
+
+BlowupCheck::BlowupCheck(const SolverCase& c, const BackendSetup& s, const RunOptions& o)
+    : case_(c), setup_(s), opt_(o), every_(o.blowup_check_every) {
+    for (const SolidBody& b : c.solids) {
+        const physics::VcpmElastic el = physics::vcpmElastic(b.youngmod, b.poissratio, b.density);
+        speed_bound_.push_back(physics::solidSpeedBound(el.wave_speed, c.constants.speedsound));
+        outside_.push_back({b.mkbound, 0, 0, 0, -1});
+    }
+    for (std::uint32_t r = 0; r < s.solid.nsolid; ++r) ++outside_[s.solid.body[r]].particles;
+}
+
+std::optional<BlowupDiagnosis> BlowupCheck::afterStep(double t, long long step, double dt,
+                                                      std::uint32_t active_fluid, long long dtmin_hits) {
+    const SolverParameters& p = case_.params;
+    const std::uint32_t nfluid = case_.nfluid;
+    if (p.min_fluid_stop > 0 && nfluid > 0 && double(active_fluid) < p.min_fluid_stop * nfluid) {
+        BlowupDiagnosis d;
+        d.quantity = "fluid loss";
+        d.time = t;
+        d.step = step;
+        d.value = double(active_fluid) / nfluid;
+        d.bound = p.min_fluid_stop;
+        d.count = nfluid - active_fluid;
+        d.message = std::to_string(nfluid - active_fluid) + " of " + std::to_string(nfluid) +
+                    " fluid particles excluded: " + std::to_string(active_fluid) + " active is below MinFluidStop " +
+                    num(p.min_fluid_stop) + " of the fluid";
+        d.likely_option = fluidOption();
+        return d;
+    }
+    streak_ = dtmin_hits > last_hits_ ? streak_ + 1 : 0;
+    last_hits_ = dtmin_hits;
+    if (streak_ >= physics::kMaxDtMinStreak) {
+        BlowupDiagnosis d;
+        d.quantity = "dt at DtMin";
+        d.time = t;
+        d.step = step;
+        d.value = double(streak_);
+        d.bound = double(physics::kMaxDtMinStreak);
+        d.message = "the CFL condition asked for a step below DtMin in " + std::to_string(streak_) +
+                    " steps in a row (dt = " + num(dt) + " s): the flow is diverging and DtMin only hides it";
+        d.likely_option = fluidOption();
+        return d;
+    }
+    return std::nullopt;
+}
+
+BlowupDiagnosis BlowupCheck::nonFiniteStep(double t, long long step, const std::string& what) const {
+    BlowupDiagnosis d;
+    d.quantity = "non-finite time step";
+    d.time = t;
+    d.step = step;
+    d.value = NAN;
+    d.message = what;
+    d.likely_option = case_.nfluid > 0 ? fluidOption() : solidOption(0);
+    return d;
+}
+
+std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, long long step, double dt) {
+    last_scan_ = step;
+    const std::size_t np = st.pos.size();
+    Offenders bad;
+    for (std::size_t i = 0; i < np; ++i)
+        if (!finite3(st.pos[i]) || !finite4(st.velrho[i]) || st.excl[i] == physics::kExcludedNotFinite)
+            bad.add(std::uint32_t(i), st.pos[i], NAN);
+    BlowupDiagnosis d;
+    d.time = t;
+    d.step = step;
+    const SolidSetup& so = setup_.solid;
+    if (bad.count > 0) {
+        bool solid = false;
+        for (const BlowupParticle& b : bad.first) solid = solid || (b.id >= so.first_solid && b.id < so.first_solid + so.nsolid);
+        d.quantity = "non-finite state";
+        d.message = std::to_string(bad.count) + " particle(s) with a non-finite position, velocity or density";
+        d.likely_option = solid ? solidOption(dt) : fluidOption();
+        d.count = bad.count;
+        d.value = NAN;
+        d.particles = bad.first;
+        return d;
+    }
+    // Solids: bond strains, speeds, and the particles outside the domain.
+    Offenders strain, speed;
+    std::vector<std::uint32_t> out(outside_.size(), 0);
+    const physics::StepConstants& dom = setup_.step;
+    for (std::uint32_t r = 0; r < so.nsolid; ++r) {
+        const std::uint32_t id = so.first_solid + r;
+        const physics::Double3 p = st.pos[id];
+        if (p.x < dom.minx || p.x > dom.maxx || p.y < dom.miny || p.y > dom.maxy || p.z < dom.minz || p.z > dom.maxz)
+            ++out[so.body[r]];
+        double worst = 0;
+        for (int q = 0; q < so.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * so.nsolid + r;
+            if (st.bond_broken[k]) continue;
+            const std::uint32_t j = (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]]
+                                                                         : so.first_solid + so.partner[k];
+            double dx, dy, dz;
+            const double e = physics::bondStrain(physics::bondVector(p, st.pos[j], dx, dy, dz), so.rest[k]);
+            if (std::fabs(e) > std::fabs(worst)) worst = e;
+        }
+        if (std::fabs(worst) > physics::kMaxBondStrain) strain.add(id, p, worst);
+        const physics::Double3 v = st.solid_vel[r];
+        const double s = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        if (s > speed_bound_[so.body[r]]) speed.add(id, p, s);
+    }
+    for (std::size_t b = 0; b < outside_.size(); ++b) {
+        SolidOutside& o = outside_[b];
+        o.outside = out[b];
+        if (out[b] > o.most) o.most = out[b];
+        if (out[b] > 0 && o.first_time < 0) {
+            o.first_time = t;
+            warnings_.push_back("warning: solid mkbound=" + std::to_string(o.mkbound) + ": " + std::to_string(out[b]) +
+                                " of " + std::to_string(o.particles) + " particles outside the simulation domain at t=" +
+                                num(t) + " s (counted in run.json; solid particles are not excluded)");
+        }
+    }
+    const Offenders* hit = strain.count > 0 ? &strain : speed.count > 0 ? &speed : nullptr;
+    if (!hit) return std::nullopt;
+    const bool by_strain = hit == &strain;
+    d.quantity = by_strain ? "solid bond strain" : "solid speed";
+    d.count = hit->count;
+    d.value = hit->worst;
+    d.bound = by_strain ? physics::kMaxBondStrain : speed_bound_[so.body[hit->first[0].id - so.first_solid]];
+    d.particles = hit->first;
+    d.message = std::to_string(hit->count) + " VCPM solid particle(s) with " +
+                (by_strain ? "an intact bond strained to " : "a speed of ") + num(hit->worst) +
+                (by_strain ? "" : " m/s") + " (bound " + num(d.bound) + (by_strain ? ")" : " m/s)");
+    d.likely_option = solidOption(dt);
+    return d;
+}
+
+void BlowupCheck::describe(BlowupDiagnosis& d, const HostState& st) const {
+    if (!d.particles.empty()) return;
+    for (std::size_t i = 0; i < st.pos.size() && d.particles.size() < kNamedParticles; ++i)
+        if (!finite3(st.pos[i]) || !finite4(st.velrho[i])) d.particles.push_back({std::uint32_t(i), st.pos[i], NAN});
+    if (!d.particles.empty()) return;
+    static const char* const kReason[] = {"active", "left the domain", "density out of range", "not finite"};
+    std::uint64_t by[4] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < st.pos.size(); ++i) {
+        const std::uint8_t e = st.excl[i];
+        if (e == 0 || e > 3) continue;
+        ++by[e];
+        if (d.particles.size() < kNamedParticles) d.particles.push_back({std::uint32_t(i), st.pos[i], double(e)});
+    }
+    std::string s;
+    for (int e = 1; e <= 3; ++e)
+        if (by[e] > 0) s += (s.empty() ? "" : ", ") + std::to_string(by[e]) + " " + kReason[e];
+    if (!s.empty()) d.message += " (" + s + ")";
+}
+
+std::vector<std::string> BlowupCheck::takeWarnings() {
+    std::vector<std::string> w;
+    w.swap(warnings_);
+    return w;
+}
+
+std::string BlowupCheck::solidOption(double dt) const {
+    const double limit = setup_.solid.dt;
+    const int n = opt_.solid_substeps;
+    if (n > 0 && case_.nfluid > 0 && dt / n > limit * (1 + 1e-9))
+        return "-vcpmsubsteps:" + std::to_string(n) + " (a solid sub-step dt/N = " + num(dt / n) +
+               " s exceeds the stability limit VcpmDtCoef dp/c_S = " + num(limit) + " s; use 0, automatic)";
+    if (case_.params.vcpm_dt_coef > 0.8)
+        return "VcpmDtCoef (" + num(case_.params.vcpm_dt_coef) + ": stable up to about 0.8 for Poisson's ratio >= 0)";
+    return "the solid's material (youngmod, poissratio, density) or VcpmDtCoef (" + num(case_.params.vcpm_dt_coef) +
+           ")";
+}
+
+std::string BlowupCheck::fluidOption() const {
+    const SolverParameters& p = case_.params;
+    if (p.dt_fixed > 0)
+        return "DtFixed / -dtfixed (" + num(p.dt_fixed) + " s: a fixed step ignores the CFL condition; remove it)";
+    if (p.cfl_number > 0.3) return "the CFL number (" + num(p.cfl_number) + "; 0.2 is usual)";
+    return "the case's boundaries, Visco (" + num(p.visco) + ") or DensityDT, or a lower CFL number (" +
+           num(p.cfl_number) + ")";
+}
+
+std::string describeBlowup(const BlowupDiagnosis& d) {
+    std::string s = "blow-up detected (" + d.quantity + ") at t=" + num(d.time) + " s, step " + std::to_string(d.step) +
+                    ": " + d.message;
+    if (!d.particles.empty()) {
+        s += "; particles";
+        for (const BlowupParticle& p : d.particles)
+            s += " " + std::to_string(p.id) + " at (" + num(p.pos.x) + ", " + num(p.pos.y) + ", " + num(p.pos.z) + ")";
+        if (d.count > d.particles.size()) s += " ...";
+    }
+    return s + "; likely cause: " + d.likely_option;
+}
+
+}  // namespace seaspring::solver

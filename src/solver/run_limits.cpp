@@ -1,0 +1,49 @@
+// SeaSpring — MIT licence.
+/// \file run_limits.cpp
+/// \brief Memory and sub-step limits checked before a run (see run_limits.h).
+#include "solver/run_limits.h"
+
+#include <cstdio>
+#include <string>
+
+#include "core/error.h"
+#include "core/format.h"
+#include "core/memory_budget.h"
+#include "physics/vcpm.h"
+
+namespace seaspring::solver {
+
+void checkRunMemory(const SolverCase& c) {
+    checkMemory(c.h5_path, 0, "the run's " + std::to_string(c.particles.size()) + " particles",
+                double(c.particles.size()) * kRunBytesPerParticle, "generate the case with a larger dp");
+}
+
+void checkSolidSubstep(const SolverCase& c, const SolidSetup& s) {
+    if (s.empty()) return;
+    const double tmax = c.params.time_max;
+    // The body that sets the sub-step: the one with the smallest VcpmDtCoef dp / c_S.
+    const SolidBody* worst = nullptr;
+    double dt = 0;
+    for (const SolidBody& b : c.solids) {
+        const physics::VcpmElastic el = physics::vcpmElastic(b.youngmod, b.poissratio, b.density);
+        const double d = physics::vcpmTimeStep(c.params.vcpm_dt_coef, c.constants.dp, el.wave_speed);
+        if (!worst || d < dt) worst = &b, dt = d;
+    }
+    if (!worst) return;
+    char what[200];
+    std::snprintf(what, sizeof what, "youngmod=%g, density=%g: the VCPM sub-step VcpmDtCoef dp/c_S is %.3g s", worst->youngmod,
+                  worst->density, s.dt);
+    if (!(tmax / s.dt <= kMaxSolidSubsteps))
+        throwInputError(c.xml_path, worst->line,
+                        std::string("<solid mkbound=\"") + std::to_string(worst->mkbound) + "\"> " + what + ", so TimeMax " +
+                            shortText(tmax) + " s needs " + shortText(tmax / s.dt, 3) + " sub-steps (at most " +
+                            shortText(kMaxSolidSubsteps) + "); check youngmod (Pa) and density (kg/m^3)");
+    const double step = c.params.dt_fixed > 0 && c.params.dt_fixed < s.dt ? c.params.dt_fixed : s.dt;
+    if (c.nfluid == 0 && !(step <= tmax))
+        throwInputError(c.xml_path, worst->line,
+                        std::string("<solid mkbound=\"") + std::to_string(worst->mkbound) + "\"> " + what +
+                            ", longer than TimeMax " + shortText(tmax) +
+                            " s: the solid would not move; check youngmod (Pa) and density (kg/m^3)");
+}
+
+}  // namespace seaspring::solver

@@ -1,0 +1,38 @@
+// SeaSpring — MIT licence.
+/// \file simulation_parts.h
+/// \brief The parts of a Simulation that its source files share (simulation.cpp, the loop in
+///        simulation_run.cpp, restart files in simulation_checkpoint.cpp): the output series,
+///        the ledger file and the blow-up check's state.
+#pragma once
+
+#include <string>
+
+#include "io/xdmf_series.h"
+#include "solver/blowup_check.h"
+#include "solver/coupling_ledger.h"
+#include "solver/simulation.h"
+
+namespace seaspring::solver {
+
+struct Simulation::Output {
+    io::XdmfSeries xdmf;
+    explicit Output(const std::string& dir) : xdmf(dir) {}
+};
+
+struct Simulation::Ledger {
+    LedgerFile file;
+    Ledger(const std::string& dir, long long resume_offset) : file(dir, resume_offset) {}
+};
+
+struct Simulation::Health {
+    BlowupCheck check;
+    HostState last_good;      ///< the last state a scan passed
+    double good_time = -1;    ///< its time (-1: none yet)
+    long long good_step = 0;
+    double written_time = -1; ///< time of the last output written
+    std::string written_file; ///< its part file (relative to OUTDIR; "" without -sv:h5)
+    double dt = 0;            ///< the last step's dt (for the diagnosis)
+    Health(const SolverCase& c, const BackendSetup& s, const RunOptions& o) : check(c, s, o) {}
+};
+
+}  // namespace seaspring::solver

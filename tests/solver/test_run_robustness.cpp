@@ -1,0 +1,197 @@
+// SeaSpring — MIT licence.
+/// \file test_run_robustness.cpp
+/// \brief Long runs that survive (issue 14): blow-ups are caught and diagnosed (which
+///        particles, which quantity, the likely option) with the last good state kept; solids
+///        that leave the domain are counted per body; absurd sub-steps and hostile options stop
+///        with a clear error; SIGINT/SIGTERM end a run cleanly; an OUTDIR never mixes two runs.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "../unit/error_expect.h"
+#include "solver/output_dir.h"
+#include "solver/stop_signal.h"
+#include "solver_test_util.h"
+
+using namespace seaspring;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The 2D dam-break front at dp 0.025 (401 wall and 3200 fluid particles).
+std::string damBreak(const std::string& dir, const std::string& extra_parameter = "") {
+    std::string xml = test::readFile(test::caseDef("dambreak_front2d/DambreakFront2D_Def.xml"));
+    if (!extra_parameter.empty()) xml = test::replaceOnce(xml, "<parameters>", "<parameters>" + extra_parameter);
+    return test::generateCase(dir, "Front", xml, 0.025);
+}
+
+/// The hanging beam (750 solid particles, solid only) with `from` replaced by `to`.
+std::string beam(const std::string& dir, const std::string& name, const std::string& from = "",
+                 const std::string& to = "") {
+    std::string xml = test::readFile(test::caseDef("hanging_beam/HangingBeam_Def.xml"));
+    if (!from.empty()) xml = test::replaceOnce(xml, from, to);
+    return test::generateCase(dir, name, xml);
+}
+
+/// Runs the seaspring program; returns its exit code (stdout and stderr to `log`).
+int runProgram(const std::string& args, const std::string& log) {
+    const std::string cmd = "OMP_WAIT_POLICY=passive '" + std::string(SEASPRING_SOLVER_BIN) + "' " + args + " >'" +
+                            log + "' 2>&1";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST(RunRobustness, FluidBlowupIsDiagnosedAndBlamesDtFixed) {
+    const std::string dir = test::scratch("robust_fluid");
+    const std::string kase = damBreak(dir);
+    // A normal run: no diagnosis, exit code 0.
+    const test::SolverRun good = test::runCpu(kase, dir + "/good", 2, [](solver::RunOptions& o) { o.nsteps = 30; });
+    EXPECT_FALSE(good.summary.blowup.has_value());
+    EXPECT_EQ(good.summary.exit_code, 0);
+    // A fixed dt far above the CFL step loses the fluid within a few steps (it used to end with
+    // exit 0 and "TimeMax reached" after losing 99.8% of it).
+    const test::SolverRun bad = test::runCpu(kase, dir + "/bad", 2, [](solver::RunOptions& o) { o.dt_fixed = 0.002; });
+    ASSERT_TRUE(bad.summary.blowup.has_value());
+    const solver::BlowupDiagnosis& d = *bad.summary.blowup;
+    EXPECT_EQ(d.quantity, "fluid loss");
+    EXPECT_EQ(bad.summary.exit_code, 1);
+    EXPECT_HAS(bad.summary.stop_reason, "blow-up");
+    EXPECT_HAS(d.likely_option, "-dtfixed (0.002 s");
+    EXPECT_LT(d.step, 30);
+    EXPECT_FALSE(d.particles.empty());
+    EXPECT_GE(d.particles[0].id, 401u);  // fluid particles
+    EXPECT_LT(d.value, 0.1);
+    EXPECT_EQ(d.bound, 0.1);  // MinFluidStop's default
+}
+
+TEST(RunRobustness, SolidBlowupBlamesVcpmSubsteps) {
+    const std::string dir = test::scratch("robust_solid");
+    const std::string kase =
+        test::generateCaseFile(dir, "Plate", test::caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"), 0.025);
+    // One solid sub-step per fluid step: 23 times the solid's stability limit. The message used
+    // to blame VcpmDtCoef, and part files held displacements of 1e19 m.
+    std::vector<double> output_times;
+    const test::SolverRun r = test::runCpu(
+        kase, dir + "/out", 2,
+        [](solver::RunOptions& o) {
+            o.solid_substeps = 1;
+            o.blowup_check_every = 1;  // a scan after every step
+            o.tmax = 0.01;
+        },
+        [&](double t, long long, const solver::HostState&) { output_times.push_back(t); });
+    ASSERT_TRUE(r.summary.blowup.has_value());
+    const solver::BlowupDiagnosis& d = *r.summary.blowup;
+    EXPECT_TRUE(d.quantity == "solid bond strain" || d.quantity == "solid speed") << d.quantity;
+    EXPECT_EQ(d.likely_option.rfind("-vcpmsubsteps:1 ", 0), 0u) << d.likely_option;
+    EXPECT_EQ(r.summary.exit_code, 1);
+    ASSERT_FALSE(d.particles.empty());
+    EXPECT_GE(d.particles[0].id, 744u);  // the solid block
+    EXPECT_LT(d.particles[0].id, 744u + 78u);
+    // The last good state is kept: written after the t = 0 output, before the blow-up.
+    ASSERT_EQ(output_times.size(), 2u);
+    EXPECT_GT(output_times[1], 0.0);
+    EXPECT_LT(output_times[1], d.time);
+    EXPECT_EQ(r.summary.last_good_time, output_times[1]);
+}
+
+TEST(RunRobustness, SolidLeavingTheDomainIsCountedPerBody) {
+    const std::string dir = test::scratch("robust_fall");
+    // No clamp, no damping: the beam falls freely and leaves the domain (0.2 m below it) at 0.2 s.
+    const std::string kase = beam(dir, "Fall", "mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\" damping=\"1\"",
+                                  "density=\"2500\" youngmod=\"3e5\" poissratio=\"0.3\"");
+    const test::SolverRun r = test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) {
+        o.tmax = 0.4;
+        o.tout = 0.1;
+    });
+    EXPECT_FALSE(r.summary.blowup.has_value());
+    ASSERT_EQ(r.summary.solids_outside.size(), 1u);
+    const solver::SolidOutside& o = r.summary.solids_outside[0];
+    EXPECT_EQ(o.mkbound, 1);
+    EXPECT_EQ(o.particles, 750u);
+    EXPECT_EQ(o.outside, 750u);
+    EXPECT_GT(o.first_time, 0.15);
+}
+
+TEST(RunRobustness, SolidOnlyCasesNeedNoSpeedOfSound) {
+    const std::string dir = test::scratch("robust_nohswl");
+    const std::string with = beam(dir, "With");
+    const std::string without = beam(dir, "Without", "<hswl value=\"0.1\" auto=\"false\" units_comment=\"m\" />", "");
+    auto run = [&](const std::string& k, const std::string& out) {
+        return test::runCpu(k, dir + out, 2, [](solver::RunOptions& o) { o.nsteps = 200; });
+    };
+    const test::SolverRun a = run(with, "/with"), b = run(without, "/without");
+    EXPECT_EQ(b.kase.constants.speedsound, 0.0);
+    EXPECT_EQ(a.summary.state_hash, b.summary.state_hash);  // c0 plays no part in a solid-only run
+}
+
+TEST(RunRobustness, AbsurdSolidSubstepsStopWithTheMaterial) {
+    const std::string dir = test::scratch("robust_e");
+    const std::string stiff = beam(dir, "Stiff", "youngmod=\"3e6\"", "youngmod=\"1e300\"");
+    const std::string soft = beam(dir, "Soft", "youngmod=\"3e6\"", "youngmod=\"1e-300\"");
+    std::string m = test::errorOf([&] { test::runCpu(stiff, dir + "/a", 1); });
+    EXPECT_HAS(m, "Stiff.xml:");
+    EXPECT_HAS(m, "youngmod=1e+300");
+    EXPECT_HAS(m, "sub-steps (at most 1e+12)");
+    m = test::errorOf([&] { test::runCpu(soft, dir + "/b", 1); });
+    EXPECT_HAS(m, "youngmod=1e-300");
+    EXPECT_HAS(m, "longer than TimeMax");
+}
+
+TEST(RunRobustness, AHugeFixedStepEnds) {
+    // -dtfixed:1e30 made the output-time loop spin for ever (1e30 + TimeOut == 1e30).
+    const std::string dir = test::scratch("robust_dt");
+    const std::string kase = damBreak(dir, "<parameter key=\"MinFluidStop\" value=\"0\"/>");
+    const test::SolverRun r = test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) { o.dt_fixed = 1e30; });
+    EXPECT_EQ(r.summary.steps, 1);
+    EXPECT_EQ(r.summary.physical_time, 1e30);
+    EXPECT_EQ(r.summary.stop_reason, "TimeMax reached");
+}
+
+TEST(RunRobustness, StopSignalEndsTheRunCleanly) {
+    const std::string dir = test::scratch("robust_signal");
+    const std::string kase = beam(dir, "Beam");
+    solver::setStopSignalForTest(SIGTERM);  // as if received before the first step
+    const test::SolverRun r = test::runCpu(kase, dir + "/out", 1);
+    solver::setStopSignalForTest(0);
+    EXPECT_EQ(r.summary.stop_reason, "stopped by SIGTERM");
+    EXPECT_EQ(r.summary.exit_code, 128 + SIGTERM);
+    EXPECT_EQ(r.summary.steps, 0);
+}
+
+TEST(RunRobustness, OutdirWithAnEarlierRunIsRefusedOrCleared) {
+    const std::string dir = test::scratch("robust_outdir");
+    const std::string kase = beam(dir, "Beam");  // the case lives in dir: never touched
+    const std::string args = "-cpu -threads:1 -nsteps:20 -progress:0 '" + kase + "' '" + dir + "'";
+    ASSERT_EQ(runProgram(args, dir + "/../robust_outdir_1.log"), 0);
+    std::ofstream(dir + "/data/part_0099.h5") << "stale";  // a part file of the earlier run
+    EXPECT_EQ(runProgram(args, dir + "/../robust_outdir_2.log"), 2);
+    EXPECT_HAS(test::readFile(dir + "/../robust_outdir_2.log"), "OUTDIR holds an earlier run (Run.out, run.json");
+    EXPECT_TRUE(fs::exists(dir + "/data/part_0099.h5"));
+    EXPECT_EQ(runProgram("-overwrite " + args, dir + "/../robust_outdir_3.log"), 0);
+    EXPECT_FALSE(fs::exists(dir + "/data/part_0099.h5"));
+    EXPECT_TRUE(fs::exists(kase + ".xml"));
+    EXPECT_TRUE(fs::exists(kase + ".h5"));
+    EXPECT_TRUE(solver::earlierRunFiles(dir + "/data").empty());
+}
+
+TEST(RunRobustness, TheProgramWritesRunJsonWithTheDiagnosisAndExitsWithOne) {
+    const std::string dir = test::scratch("robust_program");
+    const std::string kase = damBreak(dir);
+    const int code = runProgram("-cpu -threads:1 -progress:0 -dtfixed:0.002 '" + kase + "' '" + dir + "/out'",
+                                dir + "/log.txt");
+    EXPECT_EQ(code, 1);
+    const std::string json = test::readFile(dir + "/out/run.json");
+    EXPECT_HAS(json, "\"exit_code\": 1");
+    EXPECT_HAS(json, "\"blowup\": {");
+    EXPECT_HAS(json, "\"quantity\": \"fluid loss\"");
+    EXPECT_HAS(json, "\"likely_option\": \"DtFixed / -dtfixed");
+    EXPECT_HAS(test::readFile(dir + "/out/Run.out"), "blow-up detected (fluid loss)");
+    EXPECT_HAS(test::readFile(dir + "/log.txt"), "Stopped (blow-up: fluid loss)");
+}
