@@ -57,7 +57,7 @@ void readClamps(const XmlSource& src, pugi::xml_node s, const std::vector<MkBloc
 }
 
 SolidBody readSolid(const XmlSource& src, pugi::xml_node s, const std::vector<MkBlock>& blocks) {
-    src.checkAttributes(s, {"mkbound", "mk", "mkclamp", "density", "youngmod", "poissratio",
+    src.checkAttributes(s, {"mkbound", "mk", "mkclamp", "density", "youngmod", "poissratio", "constitmodel",
                             "critstretch", "damping", "declaredin", "particles"});
     SolidBody b;
     b.line = src.lineOf(s);
@@ -67,6 +67,7 @@ SolidBody readSolid(const XmlSource& src, pugi::xml_node s, const std::vector<Mk
     b.density = number("density");
     b.youngmod = number("youngmod");
     b.poissratio = number("poissratio");
+    if (s.attribute("constitmodel")) b.constitmodel = int(src.count(s, "constitmodel", 3));
     b.critstretch = number("critstretch");
     b.damping = number("damping");
     if (!(b.density > 0)) src.fail(s, "density=\"" + shortText(b.density) + "\": must be > 0 [kg/m^3]");
@@ -102,6 +103,7 @@ void writeSolids(pugi::xml_node parent, const std::vector<SolidBody>& solids, co
         n.append_attribute("density") = exactText(s.density).c_str();
         n.append_attribute("youngmod") = exactText(s.youngmod).c_str();
         n.append_attribute("poissratio") = exactText(s.poissratio).c_str();
+        if (s.constitmodel != 0) n.append_attribute("constitmodel") = s.constitmodel;
         n.append_attribute("critstretch") = exactText(s.critstretch).c_str();
         n.append_attribute("damping") = exactText(s.damping).c_str();
         n.append_attribute("declaredin") = s.declared_in.c_str();
@@ -129,6 +131,22 @@ std::vector<SolidBody> readSolids(const XmlSource& src, pugi::xml_node vcpmsolid
     std::vector<SolidBody> solids;
     for (pugi::xml_node s : vcpmsolids.children("solid")) solids.push_back(readSolid(src, s, blocks));
     return solids;
+}
+
+int effectiveConstitModel(const SolidBody& s, int dim) {
+    return s.constitmodel != 0 ? s.constitmodel : (dim == 2 ? 1 : 3);
+}
+
+std::string constitModelProblem(int constitmodel, int dim) {
+    if (constitmodel < 0 || constitmodel > 3)
+        return "constitmodel=" + std::to_string(constitmodel) +
+               ": expected 1 (plane strain, 2D), 2 (plane stress, 2D) or 3 (3D)";
+    if (dim == 2 && constitmodel == 3)
+        return "constitmodel=3 (St Venant-Kirchhoff, 3D) in a 2D case: use 1 (plane strain) or 2 (plane stress)";
+    if (dim == 3 && (constitmodel == 1 || constitmodel == 2))
+        return "constitmodel=" + std::to_string(constitmodel) + " (plane " +
+               (constitmodel == 1 ? "strain" : "stress") + ", 2D) in a 3D case: use 3";
+    return "";
 }
 
 }  // namespace seaspring::model

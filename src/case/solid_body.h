@@ -34,6 +34,10 @@ struct SolidBody {
     double density = 0;                   ///< rho_S [kg/m^3]
     double youngmod = 0;                  ///< E [Pa]
     double poissratio = 0;                ///< nu, in (-1, 0.5)
+    /// DualSPHysics' constitmodel: 1 plane strain (2D), 2 plane stress (2D), 3 three-dimensional
+    /// (DualSPHysics' St Venant-Kirchhoff; here the 3D lattice); 0 when not given: the case's
+    /// dimension decides (1 in 2D, 3 in 3D).
+    int constitmodel = 0;
     double critstretch = 0;               ///< bond breaks at elongation/rest length > this; 0: never
     double damping = 0;                   ///< multiplies sqrt(E/(rho dp^2)); 0: no damping
     std::vector<PointLoad> loads;         ///< <pointload> children
@@ -41,6 +45,12 @@ struct SolidBody {
     std::uint64_t particles = 0;          ///< particles of its MK (known once they are generated)
     int line = 0;                         ///< line of its element in the file it was read from
 };
+
+/// The constitutive model of a body in a case of `dim` dimensions (constitmodel, or 1 in 2D
+/// and 3 in 3D when it is 0).
+int effectiveConstitModel(const SolidBody& s, int dim);
+/// "" when `constitmodel` (0..3) fits a case of `dim` dimensions, else why not.
+std::string constitModelProblem(int constitmodel, int dim);
 
 /// Totals of the resolved `<vcpmsolids>` (gencase's bond statistics). The solver reads back
 /// `particles` and `bondslots` only; the others are for the reader of the file.

@@ -172,7 +172,7 @@ void CaseBuilder::readExecution(pugi::xml_node execution) {
                 src_->fail(n, "is not supported by SeaSpring (supported in <special>: vcpmsolids, "
                               "flexstrucs, gauges, savedt)");
         }
-        out_.solids = parseSolids(*src_, special, ev_, out_.mkconfig, log_);
+        out_.solids = parseSolids(*src_, special, ev_, out_.mkconfig, grid_.twoD() ? 2 : 3, log_);
     }
 }
 

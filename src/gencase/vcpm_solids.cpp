@@ -28,8 +28,10 @@ std::string trimAll(std::string s) {
     return s;
 }
 
-void validate(const XmlSource& src, pugi::xml_node n, SolidBody& s, const MkConfig& mk) {
+void validate(const XmlSource& src, pugi::xml_node n, SolidBody& s, const MkConfig& mk, int dim) {
     auto bad = [&](const std::string& what) { src.fail(n, what); };
+    const std::string model = model::constitModelProblem(s.constitmodel, dim);
+    if (!model.empty()) bad(model);
     if (s.mkbound < 0 || s.mkbound >= mk.boundcount)
         bad("mkbound=" + std::to_string(s.mkbound) + ": expected 0.." + std::to_string(mk.boundcount - 1));
     if (!(s.density > 0)) bad("density=" + std::to_string(s.density) + ": must be > 0 [kg/m^3]");
@@ -74,14 +76,14 @@ std::vector<int> parseMkList(const XmlSource& src, pugi::xml_node node, const ch
 }
 
 std::vector<SolidBody> parseSolids(const XmlSource& src, pugi::xml_node special,
-                                   const ExpressionEvaluator& ev, const MkConfig& mk,
+                                   const ExpressionEvaluator& ev, const MkConfig& mk, int dim,
                                    std::ostream& log) {
     std::vector<SolidBody> solids;
     if (pugi::xml_node v = special.child("vcpmsolids")) {
         src.checkChildren(v, {"solid"});
         src.checkAttributes(v, {});
         for (pugi::xml_node n : v.children("solid")) {
-            src.checkAttributes(n, {"mkbound", "mkclamp", "density", "youngmod", "poissratio",
+            src.checkAttributes(n, {"mkbound", "mkclamp", "density", "youngmod", "poissratio", "constitmodel",
                                     "critstretch", "tensilestrength", "damping"});
             SolidBody s;
             s.line = src.lineOf(n);
@@ -91,6 +93,7 @@ std::vector<SolidBody> parseSolids(const XmlSource& src, pugi::xml_node special,
             s.density = src.number(n, "density", ev);
             s.youngmod = src.number(n, "youngmod", ev);
             s.poissratio = src.number(n, "poissratio", ev);
+            if (n.attribute("constitmodel")) s.constitmodel = src.integer(n, "constitmodel", ev);
             s.critstretch = src.number(n, "critstretch", ev, 0.0);
             if (n.attribute("tensilestrength")) {
                 // Seed 000, Eq. A1 (after Chen & Liu 2016): critical elongation
@@ -122,7 +125,7 @@ std::vector<SolidBody> parseSolids(const XmlSource& src, pugi::xml_node special,
                 p.rate.z = src.number(l, "ratez", ev, 0.0);
                 s.loads.push_back(p);
             }
-            validate(src, n, s, mk);
+            validate(src, n, s, mk, dim);
             solids.push_back(s);
         }
     }
@@ -142,9 +145,12 @@ std::vector<SolidBody> parseSolids(const XmlSource& src, pugi::xml_node special,
             s.density = src.number(src.child(n, "density"), "value", ev);
             s.youngmod = src.number(src.child(n, "youngmod"), "value", ev);
             s.poissratio = src.number(src.child(n, "poissratio"), "value", ev);
-            validate(src, n, s, mk);
+            if (pugi::xml_node cm = n.child("constitmodel"); cm && !XmlSource::isDisabled(cm))
+                s.constitmodel = src.integer(cm, "value", ev);
+            validate(src, n, s, mk, dim);
             log << "Note: " << src.where(n) << ": <flexstrucbody mkbound=\"" << s.mkbound
-                << "\"> is modelled as a VCPM lattice solid (constitmodel and hgfactor do not apply)\n";
+                << "\"> is modelled as a VCPM lattice solid (constitmodel " << model::effectiveConstitModel(s, dim)
+                << " is kept: 1 plane strain, 2 plane stress, 3 3D; hgfactor does not apply)\n";
             solids.push_back(s);
         }
     }

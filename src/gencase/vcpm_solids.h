@@ -24,9 +24,10 @@ using model::PointLoad;
 using model::SolidBody;
 using model::XmlSource;
 
-/// Reads `<vcpmsolids>` and `<flexstrucs>` inside `<special>` (either may be absent).
+/// Reads `<vcpmsolids>` and `<flexstrucs>` inside `<special>` (either may be absent) of a case
+/// of `dim` dimensions (constitmodel must fit it).
 std::vector<SolidBody> parseSolids(const XmlSource& src, pugi::xml_node special,
-                                   const ExpressionEvaluator& ev, const MkConfig& mk,
+                                   const ExpressionEvaluator& ev, const MkConfig& mk, int dim,
                                    std::ostream& log);
 
 /// Parses an MK list "1", "0,2-3" into numbers; throws via src.fail on bad syntax.

@@ -65,6 +65,17 @@ inline VcpmElastic vcpmElastic(double young, double poisson, double density) {
     return e;
 }
 
+/// Host: a plane-stress sheet (DualSPHysics' constitmodel 2) of Young's modulus E and Poisson's
+/// ratio nu as the 2D lattice's plane-strain material of E' = E (1+2nu)/(1+nu)^2 and
+/// nu' = nu/(1+nu): the same shear modulus mu = E/(2(1+nu)) and the in-plane Lame constant
+/// lambda' = E' nu'/((1+nu')(1-2nu')) = E nu/(1-nu^2), the plane-stress one, so every in-plane
+/// response (uniaxial stress E, lateral contraction nu, P-wave speed sqrt(E/(rho(1-nu^2))))
+/// is that of the sheet (docs/vcpm.md, "Plane stress").
+inline void planeStressEquivalent(double young, double poisson, double& young_eq, double& poisson_eq) {
+    young_eq = young * (1.0 + 2.0 * poisson) / ((1.0 + poisson) * (1.0 + poisson));
+    poisson_eq = poisson / (1.0 + poisson);
+}
+
 /// Mass of a solid particle, rho_S dp^D [kg] (2D: per m of thickness).
 inline double vcpmParticleMass(int dim, double density, double dp) {
     return density * dp * dp * (dim == 3 ? dp : 1.0);

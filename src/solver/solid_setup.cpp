@@ -31,13 +31,23 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
     for (std::size_t b = 0; b < c.solids.size(); ++b) {
         const SolidBody& sb = c.solids[b];
         body_of_mk[sb.mk] = std::uint16_t(b);
-        s.materials.push_back(physics::vcpmMaterial(dim, sb.youngmod, sb.poissratio, sb.density, dp,
-                                                    sb.damping, sb.critstretch));
-        const physics::VcpmElastic el = physics::vcpmElastic(sb.youngmod, sb.poissratio, sb.density);
+        const std::string model = model::constitModelProblem(sb.constitmodel, dim);
+        if (!model.empty()) throwInputError(c.xml_path, sb.line, "<solid mkbound=\"" + std::to_string(sb.mkbound) + "\"> " + model);
+        // The lattice is plane strain in 2D; a plane-stress sheet is the plane-strain material of
+        // the same in-plane response (physics::planeStressEquivalent). Damping keeps the body's E.
+        const bool plane_stress = model::effectiveConstitModel(sb, dim) == 2;
+        double young = sb.youngmod, poisson = sb.poissratio;
+        if (plane_stress) physics::planeStressEquivalent(sb.youngmod, sb.poissratio, young, poisson);
+        physics::VcpmMaterial mat = physics::vcpmMaterial(dim, young, poisson, sb.density, dp, sb.damping, sb.critstretch);
+        mat.damp_rate = physics::vcpmMaterial(dim, sb.youngmod, sb.poissratio, sb.density, dp, sb.damping,
+                                              sb.critstretch).damp_rate;
+        s.materials.push_back(mat);
+        const physics::VcpmElastic el = physics::vcpmElastic(young, poisson, sb.density);
         dt = std::min(dt, physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
         const physics::VcpmMaterial& m = s.materials.back();
         s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + shortText(sb.density, 6) +
-                               ", E " + shortText(sb.youngmod, 6) + ", nu " + shortText(sb.poissratio, 6) + ", c_S " +
+                               ", E " + shortText(sb.youngmod, 6) + ", nu " + shortText(sb.poissratio, 6) +
+                               (dim == 2 ? (plane_stress ? ", plane stress" : ", plane strain") : std::string()) + ", c_S " +
                                shortText(el.wave_speed, 6) + " m/s, k " + shortText(m.k_first, 6) +
                                (dim == 2 ? "/" + shortText(m.k_second, 6) : std::string()) + ", T " +
                                shortText(2 * m.t_half, 6) + ", damping rate " + shortText(m.damp_rate, 6) + " 1/s" +

@@ -282,7 +282,7 @@ TEST(GencaseSolids, FlexstrucBodyWithMvnullBecomesASolid) {
         "<motion><objreal ref=\"2\"><begin mov=\"1\" start=\"0\"/><mvnull id=\"1\"/></objreal></motion>";
     const std::string special =
         "<flexstrucs>\n<flexstrucbody mkbound=\"2\" mkclamp=\"1\"><density value=\"1000\"/>"
-        "<youngmod value=\"1e6\"/><poissratio value=\"0.4\"/><constitmodel value=\"1\"/>"
+        "<youngmod value=\"1e6\"/><poissratio value=\"0.4\"/><constitmodel value=\"3\"/>"
         "<hgfactor value=\"0.1\"/></flexstrucbody>\n</flexstrucs>";
     const CaseFile c = writeCase("flexstruc", mainlist, special, motion);
     std::ostringstream log;
@@ -317,6 +317,53 @@ TEST(GencaseSolids, FlexstrucBodyWithMvnullBecomesASolid) {
     const pugi::xml_node s = doc.child("case").child("execution").child("vcpmsolids").child("solid");
     EXPECT_STREQ(s.attribute("declaredin").value(), "flexstrucs");
     EXPECT_STREQ(s.attribute("mkclamp").value(), "1");
+}
+
+// DualSPHysics' constitmodel: 2 (plane stress) in a 2D case is kept and written to the resolved
+// case (the solver then uses physics::planeStressEquivalent); a model that does not fit the
+// case's dimension stops gencase with the element's line.
+TEST(GencaseSolids, ConstitModelIsKeptAndMustFitTheDimension) {
+    const std::string mainlist2d =
+        "<setmkbound mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"-0.1\" y=\"0\" z=\"-0.1\"/>"
+        "<size x=\"0.4\" y=\"0\" z=\"0\"/></drawbox>"
+        "<setmkbound mk=\"1\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"0\"/>"
+        "<size x=\"0.2\" y=\"0\" z=\"0.2\"/></drawbox>";
+    const CaseFile c = writeCase("constit2d", mainlist2d,
+        "<vcpmsolids><solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" "
+        "poissratio=\"0.3\" constitmodel=\"2\"/></vcpmsolids>", "", true);
+    std::ostringstream log;
+    const auto builder = test::buildCaseKeepBuilder(c.path, log);
+    const GeneratedCase& g = builder->result();
+    ASSERT_EQ(g.solids.size(), 1u);
+    EXPECT_EQ(g.solids[0].constitmodel, 2);
+    pugi::xml_document doc;
+    buildResolvedCase(doc, builder->source(), g, "Case.h5");
+    EXPECT_STREQ(doc.child("case").child("execution").child("vcpmsolids").child("solid").attribute("constitmodel").value(),
+                 "2");
+    // flexstrucbody's child element, 2D.
+    const CaseFile f = writeCase("constit2d_flex", mainlist2d,
+        "<flexstrucs>\n<flexstrucbody mkbound=\"1\" mkclamp=\"0\"><density value=\"1000\"/>"
+        "<youngmod value=\"1e6\"/><poissratio value=\"0.4\"/><constitmodel value=\"2\"/></flexstrucbody>\n"
+        "</flexstrucs>", "", true);
+    EXPECT_EQ(test::buildCase(f.path).solids.at(0).constitmodel, 2);
+    // 3 (St Venant-Kirchhoff, 3D) in 2D, 2 (plane stress) in 3D, and an unknown model.
+    const CaseFile e2 = writeCase("constit_err2d", mainlist2d,
+        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" "
+        "poissratio=\"0.3\" constitmodel=\"3\"/>\n</vcpmsolids>", "", true);
+    std::string m = test::buildError(e2.path);
+    EXPECT_NE(m.find(at(e2, "<solid ")), std::string::npos) << m;
+    EXPECT_NE(m.find("constitmodel=3 (St Venant-Kirchhoff, 3D) in a 2D case"), std::string::npos) << m;
+    const CaseFile e3 = writeCase("constit_err3d", kCantilever,
+        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" "
+        "poissratio=\"0.3\" constitmodel=\"2\"/>\n</vcpmsolids>");
+    m = test::buildError(e3.path);
+    EXPECT_NE(m.find("constitmodel=2 (plane stress, 2D) in a 3D case"), std::string::npos) << m;
+    const CaseFile e4 = writeCase("constit_err7", kCantilever,
+        "<vcpmsolids>\n<solid mkbound=\"1\" mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" "
+        "poissratio=\"0.3\" constitmodel=\"7\"/>\n</vcpmsolids>");
+    m = test::buildError(e4.path);
+    EXPECT_NE(m.find("constitmodel=7: expected 1 (plane strain, 2D), 2 (plane stress, 2D) or 3 (3D)"),
+              std::string::npos) << m;
 }
 
 // ---- Errors: the message names the file, the line of the offending element and the value.

@@ -245,6 +245,29 @@ TEST_P(VcpmPatch, RecoversIsotropicElasticity) {
 INSTANTIATE_TEST_SUITE_P(NuRange, VcpmPatch,
                          ::testing::Combine(::testing::Bool(), ::testing::Values(-0.3, 0.0, 0.25, 0.3, 0.45)));
 
+// Plane stress (constitmodel 2): the 2D lattice with planeStressEquivalent's constants is a sheet
+// of the body's E and nu: under uniaxial in-plane stress sigma_xx = E e with the lateral strain
+// -nu e (plane strain: E/(1-nu^2) and -nu/(1-nu)), the same shear modulus, and the P-wave speed
+// sqrt(E/(rho (1-nu^2))). Broken on purpose: nu' = nu/(1-nu) (a plausible slip) fails here.
+TEST(VcpmPhysics, PlaneStressBodyIsAPlaneStressSheet) {
+    const double E = 2.0e6, dp = 0.01, e = 1e-5, rho = 1000.0, tol = 1e-6;
+    for (double nu : {0.0, 0.25, 0.3, 0.45, 0.49}) {
+        double young, poisson;
+        planeStressEquivalent(E, nu, young, poisson);
+        Block b(true, 15, 9, 15, dp, vcpmMaterial(2, young, poisson, rho, dp, 0, 0));
+        double worst_force = 0.0;
+        const Mat3 eu{{{1, 0, 0}, {0, 0, 0}, {0, 0, -nu}}};
+        const Mat3 s = linearStress(b, eu, e, &worst_force);
+        EXPECT_NEAR(s[0][0] / E, 1.0, tol) << "nu " << nu;
+        EXPECT_NEAR(s[2][2], 0.0, tol * E) << "nu " << nu;
+        const Mat3 es{{{0, 0, 0.5}, {0, 0, 0}, {0.5, 0, 0}}};
+        const Mat3 sh = linearStress(b, es, e, &worst_force);
+        EXPECT_NEAR(sh[0][2] / (E / (2 * (1 + nu))), 1.0, tol) << "nu " << nu;
+        EXPECT_NEAR(vcpmElastic(young, poisson, rho).wave_speed / std::sqrt(E / (rho * (1 - nu * nu))), 1.0, 1e-12);
+        EXPECT_LT(worst_force, 1e-7);
+    }
+}
+
 /// Rotation by `angle` about the axis (ax, ay, az) (Rodrigues: R = c I + s [a]x + (1-c) a a^T).
 Mat3 rotation(double ax, double ay, double az, double angle) {
     const double l = std::sqrt(ax * ax + ay * ay + az * az), c = std::cos(angle), s = std::sin(angle);
