@@ -27,24 +27,11 @@
 #include "solver/simulation.h"
 #include "solver_test_util.h"
 
+#include "test_files.h"
+
 using namespace seaspring;
 
 namespace {
-
-std::vector<std::vector<std::string>> readCsv(const std::string& path, std::string& header) {
-    std::ifstream f(path);
-    std::vector<std::vector<std::string>> rows;
-    std::string line;
-    if (!std::getline(f, header)) return rows;
-    while (std::getline(f, line)) {
-        std::vector<std::string> row;
-        std::stringstream s(line);
-        std::string item;
-        while (std::getline(s, item, ';')) row.push_back(item);
-        rows.push_back(row);
-    }
-    return rows;
-}
 
 /// tests/data/gauges/StillTank_Def.xml (2D, dp 0.01, Wendland, artificial viscosity 0.01) with
 /// the right wall as its own MK (mkbound 1) and force gauges on both MKs at every TimeOut.
@@ -85,7 +72,7 @@ void compareWithGauge(const std::string& tag, const std::string& kernel, double 
     double worst = 0;
     for (const char* name : {"Tank", "Wall"}) {
         std::string h;
-        const auto g = readCsv(out + "/gauges/GaugesForce_" + std::string(name) + ".csv", h);
+        const auto g = test::readCsv(out + "/gauges/GaugesForce_" + std::string(name) + ".csv", h);
         ASSERT_EQ(g.size(), parts.size()) << name;
         post::ForcesOptions o;
         o.filexml = kase;
@@ -170,12 +157,12 @@ TEST(PostForces, CommandLineAndErrors) {
     EXPECT_EQ(run("-filexml '" + kase + ".xml' -onlymk:11 -first:1 -savecsv '" + dir + "/f.csv'"), 0)
         << test::readFile(dir + "/log.txt");
     std::string h;
-    const auto a = readCsv(dir + "/f.csv", h);
+    const auto a = test::readCsv(dir + "/f.csv", h);
     EXPECT_EQ(h, "part;time;forcex;forcey;forcez");
     ASSERT_EQ(a.size(), 1u);
     EXPECT_EQ(a[0][0], "1");
     EXPECT_EQ(run("-filexml '" + kase + "' -mkbound 1 -first:1 -savecsv '" + dir + "/g.csv'"), 0);
-    const auto b = readCsv(dir + "/g.csv", h);
+    const auto b = test::readCsv(dir + "/g.csv", h);
     ASSERT_EQ(b.size(), 1u);
     EXPECT_EQ(a[0], b[0]);
     const std::string gauge = test::readFile(dir + "/out/gauges/GaugesForce_Wall.csv");

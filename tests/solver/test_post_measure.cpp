@@ -19,24 +19,11 @@
 #include "solver/simulation.h"
 #include "solver_test_util.h"
 
+#include "test_files.h"
+
 using namespace seaspring;
 
 namespace {
-
-std::vector<std::vector<std::string>> readCsvText(const std::string& path, std::string& header) {
-    std::ifstream f(path);
-    std::vector<std::vector<std::string>> rows;
-    std::string line;
-    if (!std::getline(f, header)) return rows;
-    while (std::getline(f, line)) {
-        std::vector<std::string> row;
-        std::stringstream s(line);
-        std::string item;
-        while (std::getline(s, item, ';')) row.push_back(item);
-        rows.push_back(row);
-    }
-    return rows;
-}
 
 /// Still water (tests/data/gauges/StillTank_Def.xml, 2D, Wendland) with gauges computed at
 /// every TimeOut (0.1 s) and part files at the same times.
@@ -82,10 +69,10 @@ void compareWithGauges(const std::string& tag, const std::string& kernel, double
     solver_grid.min = run.kase.domain_min;
     const std::vector<Vec3d> pts{{0.2, 0, 0.05}, {0.1, 0, 0.19}, {0.2, 0, 0.1}, {2, 0, 0.05}};
     std::string hp, ht, hv, ho;
-    const auto gp = readCsvText(out + "/gauges/GaugesPress_P.csv", hp);
-    const auto gt = readCsvText(out + "/gauges/GaugesPress_Top.csv", ht);
-    const auto gv = readCsvText(out + "/gauges/GaugesVel_V.csv", hv);
-    const auto go = readCsvText(out + "/gauges/GaugesPress_Out.csv", ho);
+    const auto gp = test::readCsv(out + "/gauges/GaugesPress_P.csv", hp);
+    const auto gt = test::readCsv(out + "/gauges/GaugesPress_Top.csv", ht);
+    const auto gv = test::readCsv(out + "/gauges/GaugesVel_V.csv", hv);
+    const auto go = test::readCsv(out + "/gauges/GaugesPress_Out.csv", ho);
     const auto parts = post::listPartFiles(out, -1, -1);
     ASSERT_EQ(parts.size(), 4u);  // 0, 0.1, 0.2, 0.3 s
     ASSERT_EQ(gp.size(), parts.size());
@@ -145,7 +132,7 @@ void compareWithGauges(const std::string& tag, const std::string& kernel, double
     std::ostringstream log;
     EXPECT_EQ(post::runMeasure(o, log), 3);
     std::string h;
-    const auto m = readCsvText(o.savecsv, h);
+    const auto m = test::readCsv(o.savecsv, h);
     EXPECT_EQ(h, "part;time;press_0;press_1;wsum_0;wsum_1");
     ASSERT_EQ(m.size(), 3u);
     for (std::size_t r = 0; r < 3; ++r) {
@@ -222,7 +209,7 @@ TEST(PostMeasure, CommandLine) {
     EXPECT_EQ(run("-points '" + dir + "/good.txt' -first 0 -last:1 -vars:press,vel,rhop -kclimit 0.5 -savecsv '" + dir +
                   "/m.csv'"), 0) << test::readFile(dir + "/log.txt");
     std::string h;
-    const auto m = readCsvText(dir + "/m.csv", h);
+    const auto m = test::readCsv(dir + "/m.csv", h);
     EXPECT_EQ(h, "part;time;press_0;velx_0;vely_0;velz_0;rhop_0");
     EXPECT_EQ(m.size(), 2u);
     EXPECT_EQ(run("-points '" + dir + "/bad.txt' -savecsv '" + dir + "/m2.csv'"), 2);

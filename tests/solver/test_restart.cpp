@@ -16,9 +16,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "solver_test_util.h"
+#include "test_files.h"
 
 using namespace seaspring;
 
@@ -26,21 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Program {
-    int status = -1;
-    std::string out;  ///< stdout and stderr
-};
+using Program = test::ProgramRun;
 
 Program runSeaspring(const std::string& args) {
-    const std::string cmd = "OMP_WAIT_POLICY=passive '" + std::string(SEASPRING_SOLVER_BIN) + "' " + args + " 2>&1";
-    Program p;
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    if (pipe == nullptr) return p;
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) p.out.append(buf, n);
-    const int status = ::pclose(pipe);
-    p.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return p;
+    return test::runProgram("'" + std::string(SEASPRING_SOLVER_BIN) + "' " + args + " 2>&1");
 }
 
 std::string stateHash(const Program& p) {

@@ -11,13 +11,13 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "core/error.h"
 #include "io/part_output.h"
 #include "solver/run_log.h"
 #include "solver/solver_case.h"
 #include "solver_test_util.h"
+#include "test_files.h"
 
 using namespace seaspring;
 
@@ -25,23 +25,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Program {
-    int status = -1;
-    std::string out;  ///< stdout
-};
+using Program = test::ProgramRun;
 
 /// Runs the seaspring program with `args`, stdout captured, stderr to `err_file`.
 Program runSeaspring(const std::string& args, const std::string& err_file) {
-    const std::string cmd = "OMP_WAIT_POLICY=passive '" + std::string(SEASPRING_SOLVER_BIN) + "' " + args + " 2>'" +
-                            err_file + "'";
-    Program p;
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    if (pipe == nullptr) return p;
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) p.out.append(buf, n);
-    const int status = ::pclose(pipe);
-    p.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return p;
+    return test::runProgram("'" + std::string(SEASPRING_SOLVER_BIN) + "' " + args + " 2>'" + err_file + "'");
 }
 
 /// The line of `text` that starts with `prefix` ("" when none).

@@ -29,6 +29,7 @@
 #include "physics/gauges.h"
 #include "post/flow.h"
 #include "post/part_series.h"
+#include "test_files.h"
 
 using namespace seaspring;
 
@@ -89,21 +90,6 @@ std::string writeUniformFlow(const std::string& tag, int nparts, float rhop_late
     return out;
 }
 
-std::vector<std::vector<std::string>> readCsv(const std::string& path, std::string& header) {
-    std::ifstream f(path);
-    std::vector<std::vector<std::string>> rows;
-    std::string line;
-    if (!std::getline(f, header)) return rows;
-    while (std::getline(f, line)) {
-        std::vector<std::string> row;
-        std::stringstream s(line);
-        std::string item;
-        while (std::getline(s, item, ';')) row.push_back(item);
-        rows.push_back(row);
-    }
-    return rows;
-}
-
 }  // namespace
 
 /// The plane x = 0.55: between two parts exactly one lattice column (5 x 3 = 15 particles,
@@ -120,7 +106,7 @@ TEST(PostFlow, UniformFlowThroughPlane) {
     std::ostringstream log;
     EXPECT_EQ(post::runFlow(o, log), 4);
     std::string h;
-    const auto r = readCsv(o.savecsv, h);
+    const auto r = test::readCsv(o.savecsv, h);
     EXPECT_EQ(h, "part;time;npos;nneg;mass;volume;massflow;volumeflow;masstotal;volumetotal");
     ASSERT_EQ(r.size(), 4u);
     for (int k = 0; k < 4; ++k) {
