@@ -11,7 +11,7 @@ packages=(
   python3 python3-numpy python3-h5py python3-matplotlib
   clang libomp-dev
 )
-optional=(paraview python3-paraview xvfb xauth)
+optional=(paraview python3-paraview xvfb xauth ffmpeg)
 
 missingOf() {
   for p in "$@"; do

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
     }
     std::ostream& log = run_log->out();
     solver::installStopSignals();
+    for (const std::string& n : opt.notes) log << "note: " << n << "\n";  // DualSPHysics options taken as aliases
     if (!cleared.empty() && !opt.quiet) {
         log << "-overwrite: removed the earlier run's";
         for (const std::string& f : cleared) log << " " << f;

@@ -97,6 +97,8 @@ void declareOptions(CLI::App& app) {
     value("--tout");
     value("--sv");
     optional("--svres");
+    optional("--svpips");
+    value("--dirdataout");
     value("--nsteps");
     value("--blowupcheck");
     flag("--overwrite");
@@ -178,15 +180,21 @@ void readOutputs(const Given& g, RunOptions& o) {
         const std::size_t comma = rest.find(',', p);
         const std::string item =
             rest.substr(p, comma == std::string::npos ? std::string::npos : comma - p);
-        if (item != "h5" && item != "vtk" && item != "none")
-            usageError(g.arg + ": unknown output \"" + item + "\" (supported: h5, vtk, none)");
+        if (item != "h5" && item != "vtk" && item != "none" && item != "binx" && item != "info")
+            usageError(g.arg + ": unknown output \"" + item + "\" (supported: h5, vtk, none; DualSPHysics' binx and info "
+                       "are taken as h5 and as run.json)");
         if (!items.insert(item).second) usageError(g.arg + ": \"" + item + "\" is listed twice");
+        if (item == "binx")
+            o.notes.push_back(g.arg + ": DualSPHysics' binx particle files are written as HDF5 part files "
+                              "(OUTDIR/data/part_NNNN.h5, parts.xdmf)");
+        if (item == "info") o.notes.push_back(g.arg + ": the run's information is in OUTDIR/run.json and Run.out");
         if (comma == std::string::npos) break;
         p = comma + 1;
     }
     if (items.count("none") && items.size() > 1)
         usageError(g.arg + ": \"none\" cannot be combined with outputs");
-    o.save_h5 = items.count("h5") > 0;
+    if (items.count("h5") && items.count("binx")) usageError(g.arg + ": h5 and binx are the same output here");
+    o.save_h5 = items.count("h5") > 0 || items.count("binx") > 0;
     o.save_vtk = items.count("vtk") > 0;
 }
 
@@ -208,6 +216,16 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             readOutputs(g, o);
         } else if (name == "svres") {
             if (g.has_value) toInteger(g, 0, 1);  // accepted for DualSPHysics command lines
+        } else if (name == "svpips") {
+            if (g.has_value) toInteger(g, 0, 2);  // DualSPHysics: 0, 1 or 2
+            o.notes.push_back(g.arg + ": performance figures (ns per particle per step, steps) are in run.json "
+                                      "and the summary");
+        } else if (name == "dirdataout") {
+            if (g.value.empty() || g.value.find('/') != std::string::npos || g.value == "." || g.value == "..")
+                usageError(g.arg + ": expected a folder name inside OUTDIR");
+            if (g.value != "data")
+                o.notes.push_back(g.arg + ": part files are always written to OUTDIR/data (DualSPHysics' default), "
+                                          "not OUTDIR/" + g.value);
         } else if (name == "nsteps") {
             o.nsteps = toInteger(g, 0, LLONG_MAX);
         } else if (name == "blowupcheck") {
@@ -335,8 +353,13 @@ Run control:
                        100; 0: only at output times). Fluid loss (MinFluidStop) and dt
                        stuck at DtMin are checked after every step
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
-                       files in OUTDIR/vtk), none
+                       files in OUTDIR/vtk), none; DualSPHysics' binx is taken as h5 and
+                       info as run.json (a note each)
   -svres[:0|1]         accepted for DualSPHysics command lines; run.json is always written
+  -svpips[:0|1|2]      accepted for DualSPHysics command lines (a note): the figures are in
+                       run.json and the summary
+  -dirdataout:NAME     accepted for DualSPHysics command lines: part files go to OUTDIR/data
+                       whatever NAME (a note says so when NAME is not data)
   -cellmode:auto|full|h|third|quarter
                        neighbour cells of size 2h (full), h (h), 2h/3 (third) or h/2
                        (quarter); finer cells mean fewer candidates per neighbour and

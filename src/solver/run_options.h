@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "solver/solver_case.h"
 
@@ -51,6 +52,9 @@ struct RunOptions {
     std::string restart_file;
     double progress_interval = 1.0;  ///< [s] of wall time between progress lines; 0 = none
     bool quiet = false;
+    /// Notes on DualSPHysics options taken as aliases (-sv:binx, -dirdataout, -svpips): what
+    /// SeaSpring does instead; the solver prints them with the banner.
+    std::vector<std::string> notes;
     bool help = false, version = false;  ///< set alone: the rest is not parsed
 };
 

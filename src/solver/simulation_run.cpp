@@ -26,11 +26,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Warns when more than WrnPartsOut % of the fluid is excluded; returns whether it warned.
+/// Notes (once) when more than WrnPartsOut % of the fluid is excluded; returns whether it did.
+/// Water leaving through an open end of the domain is normal, so this is a note that says what
+/// it means, not an alarm: a real loss of the fluid is a blow-up (MinFluidStop, blowup_check.h).
 bool warnExcludedFluid(std::ostream& log, const SolverCase& c, std::uint32_t active) {
     if (c.nfluid == 0 || !(double(c.nfluid - active) > c.params.wrn_parts_out / 100.0 * c.nfluid)) return false;
-    log << "warning: " << (c.nfluid - active) << " fluid particles excluded (more than " << c.params.wrn_parts_out
-        << "% of the fluid)\n";
+    log << "note: " << (c.nfluid - active) << " fluid particles are excluded, more than WrnPartsOut "
+        << c.params.wrn_parts_out << "% of the fluid (they left the domain or their density left [RhopOutMin, "
+           "RhopOutMax]; run.json counts each reason). Expected where water leaves the domain; a loss below "
+           "MinFluidStop stops the run as a blow-up\n";
     return true;
 }
 

@@ -116,6 +116,21 @@ TEST(RunOptions, Outputs) {
     o = parseWith({"-sv:none"});
     EXPECT_FALSE(o.save_h5);
     EXPECT_FALSE(o.save_vtk);
+    // DualSPHysics' -sv:binx (particle files) is h5 here, info is run.json; each with a note.
+    o = parseWith({"-sv:binx,vtk"});
+    EXPECT_TRUE(o.save_h5);
+    EXPECT_TRUE(o.save_vtk);
+    ASSERT_EQ(o.notes.size(), 1u);
+    EXPECT_NE(o.notes[0].find("HDF5 part files"), std::string::npos) << o.notes[0];
+    o = parseWith({"-sv:binx,info"});
+    EXPECT_TRUE(o.save_h5);
+    EXPECT_EQ(o.notes.size(), 2u);
+    // -svpips and -dirdataout are accepted with a note (-dirdataout:data is the default: none).
+    o = parseWith({"-svpips:1", "-dirdataout:data"});
+    EXPECT_EQ(o.notes.size(), 1u);
+    o = parseWith({"-svpips", "-dirdataout:parts"});
+    ASSERT_EQ(o.notes.size(), 2u);
+    EXPECT_NE((o.notes[0] + o.notes[1]).find("always written to OUTDIR/data"), std::string::npos);
     // -svres is accepted (DualSPHysics benchmark command lines) and changes nothing.
     for (const char* a : {"-svres", "-svres:0", "-svres:1"}) {
         o = parseWith({a});
@@ -275,10 +290,13 @@ TEST(RunOptions, ValuesMustLieInRange) {
     expectError({"-verlet:0"}, "-verlet:0: 0 must be >= 1");
     expectError({"-progress:-1"}, "-progress:-1: -1 must be >= 0");
     expectError({"-svres:2"}, "-svres:2: 2 must be 0..1");
+    expectError({"-sv:h5,binx"}, "-sv:h5,binx: h5 and binx are the same output here");
+    expectError({"-dirdataout:a/b"}, "-dirdataout:a/b: expected a folder name inside OUTDIR");
+    expectError({"-svpips:3"}, "-svpips:3: 3 must be 0..2");
     expectError({"-cellmode:half"},
                 "-cellmode:half: \"half\" is not a cell mode (supported: auto, full, h, third, quarter)");
-    expectError({"-sv:bi4"}, "-sv:bi4: unknown output \"bi4\" (supported: h5, vtk, none)");
-    expectError({"-sv:h5,"}, "-sv:h5,: unknown output \"\" (supported: h5, vtk, none)");
+    expectError({"-sv:bi4"}, "-sv:bi4: unknown output \"bi4\" (supported: h5, vtk, none; DualSPHysics' binx and info are taken as h5 and as run.json)");
+    expectError({"-sv:h5,"}, "-sv:h5,: unknown output \"\" (supported: h5, vtk, none; DualSPHysics' binx and info are taken as h5 and as run.json)");
     expectError({"-sv:vtk,vtk"}, "-sv:vtk,vtk: \"vtk\" is listed twice");
     expectError({"-sv:none,vtk"}, "-sv:none,vtk: \"none\" cannot be combined with outputs");
 }
