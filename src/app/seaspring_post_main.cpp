@@ -89,7 +89,13 @@ int main(int argc, char** argv) {
     measure->add_option("--points", mo.points, "points file: POINTS then x y z lines, or POINTSLIST")->required();
     measure->add_option("--first", mo.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
     measure->add_option("--last", mo.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
-    measure->add_option("--vars", vars, "press, vel, rhop, wsum or all, comma-separated (default press)");
+    measure->add_option("--vars", vars, "press, vel, rhop, wsum, height or all, comma-separated (default press)");
+    std::vector<double> height;
+    CLI::Option* height_opt =
+        measure->add_option("--height", height,
+                            "[C] (DualSPHysics' -height[:C]): add the free-surface height above each point (the SWL "
+                            "gauge's method, mass limit C times the fluid particle's mass; default 0.5 in 3D, 0.4 in 2D)")
+            ->expected(0, 1);
     measure->add_option("--kclimit", mo.kclimit, "Shepard limit: wsum below it gives 0 (default 0.5)");
     std::vector<double> gridmin;
     measure->add_option("--celldiv", mo.grid.cell_div, "cells of 2h/N (1..4; default 1)")->check(CLI::Range(1, 4));
@@ -169,7 +175,11 @@ int main(int argc, char** argv) {
     }
     try {
         if (measure->parsed()) {
-            mo.vars = seaspring::post::parseMeasureVars(vars);
+            mo.vars = seaspring::post::parseMeasureVars(height_opt->count() > 0 ? vars + ",height" : vars);
+            if (!height.empty()) {
+                if (!(height[0] > 0)) throw seaspring::Error("-height: the mass limit coefficient must be > 0");
+                mo.height_coef = height[0];
+            }
             if (!gridmin.empty()) {
                 mo.grid.has_min = true;
                 mo.grid.min = seaspring::Vec3d{gridmin[0], gridmin[1], gridmin[2]};

@@ -18,6 +18,7 @@
 /// cells sorted by cell then id) and accumulate in double, so both backends give the same bits.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "physics/cell_grid.h"
@@ -72,6 +73,29 @@ SEASPRING_HD inline double shepard(double sum, double wsum, double kclimit) {
 /// The SWL gauge's default mass limit, as a fraction of the fluid particle mass (JGaugeSwl:
 /// 0.5 in 3D, 0.4 in 2D; <masslimit coef=> overrides it).
 inline double swlMassLimitCoef(int dim) { return dim == 3 ? 0.5 : 0.4; }
+
+/// The points of a free-surface line from p0 towards p2 spaced about `pointdp` (JGaugeSwl):
+/// np = floor(|p2 - p0| / pointdp), one more when the rest is at least 0.1 pointdp (at least 1);
+/// point k = p0 + k dir, k = 0..np (count = np + 1). The in-run SWL gauge and seaspring-post
+/// measure's height both take their points from here.
+struct SwlLine {
+    Double3 point0{0, 0, 0}, dir{0, 0, 0};
+    std::uint32_t count = 0;
+    Double3 point(std::uint32_t k) const { return Double3{point0.x + dir.x * k, point0.y + dir.y * k, point0.z + dir.z * k}; }
+};
+inline SwlLine swlLine(const Double3& p0, const Double3& p2, double pointdp) {
+    const double dx = p2.x - p0.x, dy = p2.y - p0.y, dz = p2.z - p0.z;
+    const double dis = std::sqrt(dx * dx + dy * dy + dz * dz);
+    auto np = std::uint32_t(dis / pointdp);
+    if (dis - pointdp * np >= pointdp * 0.1) ++np;
+    if (np < 1) np = 1;
+    const double step = dis / np;
+    SwlLine l;
+    l.point0 = p0;
+    l.dir = Double3{dx / dis * step, dy / dis * step, dz / dis * step};
+    l.count = np + 1;
+    return l;
+}
 
 /// The free surface along the line point0 + k dir, k = 0..n-1, from the SWL masses there
 /// (JGaugeSwl): the first point below masslimit that follows one above it, moved back towards

@@ -58,10 +58,11 @@ std::vector<MeasureVar> parseMeasureVars(const std::string& list) {
         else if (w == "vel") add(MeasureVar::Vel);
         else if (w == "rhop" || w == "rho") add(MeasureVar::Rhop);
         else if (w == "wsum") add(MeasureVar::Wsum);
+        else if (w == "height") add(MeasureVar::Height);
         else if (w == "all") {
             add(MeasureVar::Press), add(MeasureVar::Vel), add(MeasureVar::Rhop), add(MeasureVar::Wsum);
         } else
-            throw Error("-vars: unknown variable '" + w + "' (known: press, vel, rhop, wsum, all)");
+            throw Error("-vars: unknown variable '" + w + "' (known: press, vel, rhop, wsum, height, all)");
         a = b + 1;
     }
     return v;
@@ -161,16 +162,57 @@ int runMeasure(const MeasureOptions& o, std::ostream& log) {
                 case MeasureVar::Vel: h += ";velx_" + k + ";vely_" + k + ";velz_" + k; break;
                 case MeasureVar::Rhop: h += ";rhop_" + k; break;
                 case MeasureVar::Wsum: h += ";wsum_" + k; break;
+                case MeasureVar::Height: h += ";height_" + k; break;
             }
         }
     std::fprintf(f, "%s\n", h.c_str());
+    const bool height = std::find(o.vars.begin(), o.vars.end(), MeasureVar::Height) != o.vars.end();
     for (const auto& [idx, path] : parts) {
         const io::PartData d = io::readPartH5(path);
-        const std::vector<PointSums> s = measurePart(d, pts, o.grid, path);
+        // height: a vertical SWL line above each point (its points after the others, one call).
+        std::vector<Vec3d> all = pts;
+        std::vector<physics::SwlLine> lines;
+        double masslimit = 0;
+        if (height) {
+            double ztop = -1e300, mfluid = 0;
+            for (std::size_t i = 0; i < d.type.size(); ++i)
+                if (d.type[i] == std::uint8_t(ParticleType::Fluid) && d.excluded[i] == 0) {
+                    ztop = std::max(ztop, d.pos[3 * i + 2]);
+                    if (!d.mass.empty()) mfluid = d.mass[i];
+                }
+            if (!(mfluid > 0)) throw Error(path + ": no fluid mass (/mass): height needs a format 2 part file");
+            const double coef = o.height_coef > 0 ? o.height_coef : physics::swlMassLimitCoef(d.constants.dimension);
+            masslimit = coef * mfluid;
+            ztop += 2.0 * d.constants.h;
+            const double pointdp = 0.5 * d.constants.dp;
+            for (const Vec3d& p : pts) {
+                // Up to a whole number of dp/2 above the point, so that the spacing is dp/2 as an
+                // SWL gauge's line from the point with pointdp dp/2 that reaches above the water.
+                const physics::Double3 p0{p.x, p.y, p.z};
+                const double top = p.z + std::ceil((ztop - p.z) / pointdp) * pointdp;
+                const physics::SwlLine l = p.z < ztop ? physics::swlLine(p0, physics::Double3{p.x, p.y, top}, pointdp)
+                                                      : physics::SwlLine{p0, physics::Double3{0, 0, 0}, 0};
+                lines.push_back(l);
+                for (std::uint32_t k = 0; k < l.count; ++k) {
+                    const physics::Double3 q = l.point(k);
+                    all.push_back(Vec3d{q.x, q.y, q.z});
+                }
+            }
+        }
+        const std::vector<PointSums> s = measurePart(d, all, o.grid, path);
+        std::vector<double> surface(pts.size(), 0.0);
+        for (std::size_t p = 0, at = pts.size(); p < lines.size(); at += lines[p].count, ++p) {
+            std::vector<double> mass(lines[p].count);
+            for (std::uint32_t k = 0; k < lines[p].count; ++k) mass[k] = s[at + k].g.mass;
+            surface[p] = lines[p].count == 0 ? pts[p].z
+                                             : physics::swlSurface(mass.data(), int(lines[p].count), lines[p].point0,
+                                                                   lines[p].dir, masslimit).z;
+        }
         std::fprintf(f, "%d;%.10g", idx, d.time);
         const double kc = o.kclimit;
         for (MeasureVar v : o.vars)
-            for (const PointSums& q : s) {
+            for (std::size_t p = 0; p < pts.size(); ++p) {
+                const PointSums& q = s[p];
                 const physics::GaugeSample& g = q.g;
                 switch (v) {
                     case MeasureVar::Press: std::fprintf(f, ";%.9g", physics::shepard(g.press, g.wsum, kc)); break;
@@ -180,6 +222,7 @@ int runMeasure(const MeasureOptions& o, std::ostream& log) {
                         break;
                     case MeasureVar::Rhop: std::fprintf(f, ";%.9g", physics::shepard(q.rhop, g.wsum, kc)); break;
                     case MeasureVar::Wsum: std::fprintf(f, ";%.9g", g.wsum); break;
+                    case MeasureVar::Height: std::fprintf(f, ";%.9g", surface[p]); break;
                 }
             }
         std::fprintf(f, "\n");

@@ -27,10 +27,10 @@
 namespace seaspring::post {
 
 /// What a measure row holds per point.
-enum class MeasureVar { Press, Vel, Rhop, Wsum };
+enum class MeasureVar { Press, Vel, Rhop, Wsum, Height };
 
-/// "press,vel,rhop,wsum" (any order, case-insensitive; "all" = all four) -> list, each once, in
-/// the order given. Throws seaspring::Error on an unknown name.
+/// "press,vel,rhop,wsum,height" (any order, case-insensitive; "all" = the first four) -> list,
+/// each once, in the order given. Throws seaspring::Error on an unknown name.
 std::vector<MeasureVar> parseMeasureVars(const std::string& list);
 
 /// The kernel sums at one point: GaugeSample plus sum V W rho (for rhop).
@@ -61,13 +61,19 @@ struct MeasureOptions {
     int first = -1, last = -1;
     std::vector<MeasureVar> vars{MeasureVar::Press};
     double kclimit = 0.5;  ///< Shepard: wsum below this gives 0 (the gauges' default)
+    /// height: the mass limit as a fraction of the fluid particle's mass (0: the SWL gauge's
+    /// default, physics::swlMassLimitCoef).
+    double height_coef = 0;
     MeasureGrid grid;
     std::string savecsv;  ///< output CSV
 };
 
 /// Runs the measure subcommand: reads the points and the parts, writes `savecsv`
 /// (';'-separated, one header line: part;time then, per variable in order, one column per point:
-/// press_K [Pa]; velx_K;vely_K;velz_K [m/s]; rhop_K [kg/m^3]; wsum_K), written under a
+/// press_K [Pa]; velx_K;vely_K;velz_K [m/s]; rhop_K [kg/m^3]; wsum_K; height_K [m]: the free
+/// surface above point K, found as the in-run SWL gauge finds it (physics::swlLine from the point
+/// up to 2h above the highest fluid particle, spaced dp/2; physics::swlSurface on the mass sums
+/// with the mass limit; the point itself when it is dry)), written under a
 /// temporary name and renamed when complete. Progress lines go to `log`. Returns the rows written.
 int runMeasure(const MeasureOptions& o, std::ostream& log);
 

@@ -120,19 +120,17 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
                 addPoint(sp.point);
                 break;
             case GaugeKind::Swl: {
-                const Vec3d d = sp.point2 - sp.point0;
-                const double dis = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                auto np = std::uint32_t(dis / sp.pointdp);
-                if (dis - sp.pointdp * np >= sp.pointdp * 0.1) ++np;
-                if (np < 1) np = 1;
-                const double step = dis / np;
-                item.point0 = physics::Double3{sp.point0.x, sp.point0.y, sp.point0.z};
-                item.dir = physics::Double3{d.x / dis * step, d.y / dis * step, d.z / dis * step};
+                const physics::SwlLine line = physics::swlLine(physics::Double3{sp.point0.x, sp.point0.y, sp.point0.z},
+                                                               physics::Double3{sp.point2.x, sp.point2.y, sp.point2.z},
+                                                               sp.pointdp);
+                item.point0 = line.point0;
+                item.dir = line.dir;
                 item.first = std::uint32_t(q_.points.size());
-                item.count = np + 1;
-                for (std::uint32_t k = 0; k <= np; ++k)
-                    addPoint(Vec3d{sp.point0.x + item.dir.x * k, sp.point0.y + item.dir.y * k,
-                                   sp.point0.z + item.dir.z * k});
+                item.count = line.count;
+                for (std::uint32_t k = 0; k < line.count; ++k) {
+                    const physics::Double3 q = line.point(k);
+                    addPoint(Vec3d{q.x, q.y, q.z});
+                }
                 item.masslimit = sp.masslimit ? *sp.masslimit
                                               : sp.masslimit_coef.value_or(physics::swlMassLimitCoef(dim_)) * massfluid_;
                 break;
