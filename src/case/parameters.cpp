@@ -163,6 +163,13 @@ SolverParameters readParameters(const ParameterTable& t) {
     p.vcpm_dt_coef = t.atLeast("VcpmDtCoef", 0, false);
     p.vcpm_coupling = t.choice("VcpmCoupling", {1, 2}, "1 staggered as seed 000, 2 staggered midpoint");
     if (p.vcpm_dt_coef > 2) t.fail("VcpmDtCoef", "must be <= 2 (the lattice is unstable far below that; 0.8 is safe for nu >= 0)");
+    p.vcpm_contact = t.choice("VcpmContact", {0, 1}, "0 none, 1 contact of VCPM solids");
+    p.vcpm_contact_stiffness = t.atLeast("VcpmContactStiffness", 0, false);
+    if (p.vcpm_contact_stiffness > 2)
+        t.fail("VcpmContactStiffness", "must be <= 2 (a multiple of the bond stiffness; the sub-step limit grows with it)");
+    p.vcpm_contact_damping = t.atLeast("VcpmContactDamping", 0, true);
+    if (p.vcpm_contact_damping > 1) t.fail("VcpmContactDamping", "is a fraction of critical damping: must be <= 1");
+    p.vcpm_contact_friction = t.atLeast("VcpmContactFriction", 0, true);
     p.time_out = t.atLeast("TimeOut", 0, false);
     if (t.number("TimeOutExtra") > 0)
         t.fail("TimeOutExtra",

@@ -49,6 +49,10 @@ struct SolverParameters {
     double cfl_number = 0.2;    ///< from <constants><cflnumber>
     double vcpm_dt_coef = 0.8;  ///< VCPM sub-step = this * dp / c_S (SeaSpring's VcpmDtCoef)
     int vcpm_coupling = 2;      ///< 1: seed 000's staggered scheme; 2: staggered midpoint (symplectic only)
+    int vcpm_contact = 0;       ///< 1: contact of VCPM solids (physics/solid_contact.h)
+    double vcpm_contact_stiffness = 0.5;  ///< contact stiffness / first-neighbour bond stiffness
+    double vcpm_contact_damping = 0.5;    ///< fraction of critical damping of the normal dashpot
+    double vcpm_contact_friction = 0;     ///< Coulomb friction coefficient
 };
 
 /// An axis-aligned box [m].

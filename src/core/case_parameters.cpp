@@ -64,6 +64,10 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"DivCleanKp", "0", K::Number, "divergence cleaning coefficient"},
         {"VcpmDtCoef", "0.8", K::Number, "VCPM solid sub-step = VcpmDtCoef*dp/c_S (SeaSpring)"},
         {"VcpmCoupling", "2", K::Number, "VCPM coupling 1:staggered as seed 000, 2:staggered midpoint (SeaSpring)"},
+        {"VcpmContact", "0", K::Number, "contact of VCPM solids 0:none, 1:solid-solid and solid-wall (SeaSpring)"},
+        {"VcpmContactStiffness", "0.5", K::Number, "VCPM contact stiffness / first-neighbour bond stiffness (SeaSpring)"},
+        {"VcpmContactDamping", "0.5", K::Number, "VCPM contact normal damping, fraction of critical (SeaSpring)"},
+        {"VcpmContactFriction", "0", K::Number, "VCPM contact Coulomb friction coefficient (SeaSpring)"},
     };
     return table;
 }

@@ -24,6 +24,7 @@
 #include <cstdint>
 
 #include "core/host_device.h"
+#include "physics/blowup_bounds.h"
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
@@ -46,6 +47,7 @@ struct VcpmMaterial {
     double inv_mass = 0;  ///< 1 / (rho_S dp^D)
     double damp_rate = 0; ///< c_d [1/s]: damping force -m c_d v (Eq. 11; 0 = none)
     double crit_stretch = 0;  ///< a bond breaks when (|r|-L0)/L0 > this; <= 0: never
+    double max_speed = 1e300; ///< blow-up bound on a particle's speed [m/s] (blowup_bounds.h)
 };
 
 /// Elastic and time-step properties of a material (host).
@@ -181,6 +183,35 @@ SEASPRING_HD inline double bondForce(double k, double t_half, double dl, double 
     return -k * dl - t_half * (sum_i + sum_j);
 }
 
+/// The box the solid particles live in: the simulation domain widened by `margin` (2h) on
+/// every side. A solid particle that leaves it is frozen where it crossed: its velocity is
+/// zero from then on, it no longer moves, and every bond it has breaks (both ends see the same
+/// positions, so both slots decide alike). The margin keeps a plate that is the edge of its
+/// case (a tank floor bending a little out of the default domain, the particles' bounding
+/// box) alive; the fluid is excluded at the domain itself, so nothing is left near a frozen
+/// particle to act on or be acted on.
+struct SolidKeepBox {
+    double minx = -1e300, miny = -1e300, minz = -1e300;
+    double maxx = 1e300, maxy = 1e300, maxz = 1e300;
+};
+
+/// Host: the domain [lo, hi] widened by margin on every side.
+inline SolidKeepBox solidKeepBox(const Double3& lo, const Double3& hi, double margin) {
+    SolidKeepBox k;
+    k.minx = lo.x - margin;
+    k.miny = lo.y - margin;
+    k.minz = lo.z - margin;
+    k.maxx = hi.x + margin;
+    k.maxy = hi.y + margin;
+    k.maxz = hi.z + margin;
+    return k;
+}
+
+/// True when p lies outside the box (a NaN position is not outside: the blow-up checks name it).
+SEASPRING_HD inline bool solidOutside(const SolidKeepBox& k, const Double3& p) {
+    return p.x < k.minx || p.x > k.maxx || p.y < k.miny || p.y > k.maxy || p.z < k.minz || p.z > k.maxz;
+}
+
 /// Solid state (solid-index order). A sub-step evaluates forces at `pos` (predictor) and at
 /// `pos_half` (corrector); each pass reads one position array and writes another, so no
 /// particle reads a position that another thread of the same pass writes.
@@ -197,6 +228,14 @@ struct SolidState {
     const Double3* load_force = nullptr;
     const Double3* load_rate = nullptr;
     double t0 = 0, span = 0;  ///< the sub-cycle's start time and length: t = t0 + f span
+    SolidKeepBox keep;        ///< outside it a particle is frozen (SolidKeepBox)
+    SolidAlarm* alarm = nullptr;  ///< the blow-up bound each particle passed first (blowup_bounds.h)
+    /// Contact (solid_contact.h; all null without it): the contact force of the evaluation
+    /// (written by its own pass before the predictor and before the corrector), and its
+    /// impulse and work on each particle since t = 0 (the ledger).
+    const Double3* contact_force = nullptr;
+    Double3* contact_impulse = nullptr;
+    double* contact_work = nullptr;
 };
 
 /// The point load on solid particle s at time fraction f of the sub-cycle (0 without loads).
@@ -208,12 +247,17 @@ SEASPRING_HD inline Double3 pointLoadAt(const SolidState& st, std::uint32_t s, d
 }
 
 /// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
-/// its bonds (the partner decides the mirror slot with the same bits) and returns
-/// S_s = sum of dl over its intact bonds. `f`: time fraction for the clamp nodes.
+/// its bonds (the partner decides the mirror slot with the same bits; a bond with an end
+/// outside st.keep breaks too) and returns S_s = sum of dl over its intact bonds. `f`: time
+/// fraction for the clamp nodes. Raises s's alarm for a position that is not finite or an
+/// intact bond strained past kMaxBondStrain.
 SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st,
                                       const SolidBonds& b, const ClampNodes& cn, double f) {
     const Double3 p = ep[s];
     const double crit = st.material[st.body[s]].crit_stretch;
+    const bool out_s = solidOutside(st.keep, p);
+    const double t = st.t0 + f * st.span;
+    if (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)) raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
     const int nb = b.count[s];
     double sum = 0.0;
     for (int q = 0; q < nb; ++q) {
@@ -224,10 +268,11 @@ SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const 
         const double len = bondVector(p, pj, dx, dy, dz);
         const double rest = b.rest[k];
         std::uint8_t br = b.broken[k];
-        if (!br && bondBreaks(len, rest, crit)) {
+        if (!br && (bondBreaks(len, rest, crit) || out_s || solidOutside(st.keep, pj))) {
             br = 1;
             b.broken[k] = 1;
         }
+        if (!br && bondPastBound(len, rest)) raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, rest), t);
         sum += br ? 0.0 : halfElongation(len, rest);
     }
     return sum;
@@ -285,12 +330,24 @@ SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double
 }
 
 /// Predictor pass of a sub-step (Eqs. 20-21) for particle s: a^m at r^m, then
-/// v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
+/// v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m. A frozen particle (outside
+/// st.keep) stays where it is, at rest.
 SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
                                           const ClampNodes& cn, double f, double dt, double gx, double gy,
                                           double gz) {
+    if (solidOutside(st.keep, st.pos[s])) {
+        const Double3 rest{0, 0, 0};
+        st.vel0[s] = rest;
+        st.vel[s] = rest;
+        st.pos_half[s] = st.pos[s];
+        return;
+    }
     const Double3 fi = solidBondForceAt(s, st.pos, st, b, cn, f), fl = pointLoadAt(st, s, f);
-    const Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
+    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
+    if (st.contact_force) {
+        const Double3 fc = st.contact_force[s];
+        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
+    }
     const Double3 v = st.vel[s], p = st.pos[s];
     const Double3 a = solidAcceleration(fb, st.fluid_force[s], v, st.material[st.body[s]], gx, gy, gz);
     const double dth = 0.5 * dt;
@@ -299,19 +356,62 @@ SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st,
     st.pos_half[s] = Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
 }
 
-/// Corrector pass (Eqs. 22-23): a^{m+1/2} at r^{m+1/2} (damping with v^{m+1/2}), then
-/// v^{m+1} = v^m + dt a^{m+1/2} and r^{m+1} = r^m + dt/2 (v^m + v^{m+1}).
+/// Corrector pass (Eqs. 22-23): a^{m+1/2} at r^{m+1/2} (damping with v^{m+1/2}; bond, load,
+/// hydrodynamic and contact forces), then
+/// v^{m+1} = v^m + dt a^{m+1/2} and r^{m+1} = r^m + dt/2 (v^m + v^{m+1}). A particle outside
+/// st.keep (frozen at the predictor) stays; one that r^{m+1} takes outside freezes there.
+/// Raises s's alarm for a velocity that is not finite or faster than the material's max_speed.
 SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
                                           const ClampNodes& cn, double f, double dt, double gx, double gy,
                                           double gz) {
+    if (solidOutside(st.keep, st.pos[s])) return;
     const Double3 fi = solidBondForceAt(s, st.pos_half, st, b, cn, f), fl = pointLoadAt(st, s, f);
-    const Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
+    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
+    if (st.contact_force) {
+        const Double3 fc = st.contact_force[s];
+        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
+    }
     const Double3 a = solidAcceleration(fb, st.fluid_force[s], st.vel[s], st.material[st.body[s]], gx, gy, gz);
     const Double3 v0 = st.vel0[s], p0 = st.pos[s];
     const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};
     const double dth = 0.5 * dt;
-    st.vel[s] = v;
-    st.pos[s] = Double3{p0.x + dth * (v0.x + v.x), p0.y + dth * (v0.y + v.y), p0.z + dth * (v0.z + v.z)};
+    const Double3 p{p0.x + dth * (v0.x + v.x), p0.y + dth * (v0.y + v.y), p0.z + dth * (v0.z + v.z)};
+    const double t = st.t0 + f * st.span;
+    if (notFinite(v.x) || notFinite(v.y) || notFinite(v.z))
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, v.x + v.y + v.z, t);
+    else if (speedPastBound(v.x, v.y, v.z, st.material[st.body[s]].max_speed))
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmSpeed, sqrt(v.x * v.x + v.y * v.y + v.z * v.z), t);
+    if (st.contact_force) {  // the ledger: impulse F dt and work F . (r^{m+1} - r^m) of the contact force
+        const Double3 fc = st.contact_force[s], j = st.contact_impulse[s];
+        st.contact_impulse[s] = Double3{j.x + fc.x * dt, j.y + fc.y * dt, j.z + fc.z * dt};
+        st.contact_work[s] += fc.x * (p.x - p0.x) + fc.y * (p.y - p0.y) + fc.z * (p.z - p0.z);
+    }
+    st.vel[s] = solidOutside(st.keep, p) ? Double3{0, 0, 0} : v;
+    st.pos[s] = p;
+}
+
+/// After a sub-cycle, for solid particle s: raises its alarm for an intact bond strained past
+/// kMaxBondStrain at the end positions (the sub-steps test the positions they start from, so
+/// this covers the last one) and returns 1 when its alarm is raised, else 0.
+SEASPRING_HD inline std::uint32_t solidAlarmAfterSubCycleAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                                            const ClampNodes& cn) {
+    if (st.alarm[s].kind == kSolidAlarmNone) {
+        const Double3 p = st.pos[s];
+        const int nb = b.count[s];
+        for (int q = 0; q < nb; ++q) {
+            const std::uint32_t k = std::uint32_t(q) * b.n + s;
+            if (b.broken[k]) continue;
+            const std::uint32_t j = b.partner[k];
+            const Double3 pj = (b.flags[k] & kBondClamp) ? clampPosAt(cn, j, 1.0) : st.pos[j];
+            double dx, dy, dz;
+            const double len = bondVector(p, pj, dx, dy, dz);
+            if (bondPastBound(len, b.rest[k])) {
+                raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, b.rest[k]), st.t0 + st.span);
+                break;
+            }
+        }
+    }
+    return st.alarm[s].kind != kSolidAlarmNone ? 1u : 0u;
 }
 
 /// Number of solid sub-steps for a fluid step dt_f (Section 2.4.1): int(dt_f / dt_s) + 1.

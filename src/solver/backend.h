@@ -14,6 +14,7 @@
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/gauges.h"
+#include "physics/blowup_bounds.h"
 #include "physics/mdbc.h"
 #include "physics/particle_updates.h"
 #include "physics/time_integration.h"
@@ -68,6 +69,9 @@ struct HostState : HostParticles {
     std::vector<std::uint8_t> bond_broken;       ///< per bond slot (SolidSetup layout)
     std::vector<physics::Double3> solid_impulse; ///< ledger: time integral of solid_force [N s]
     std::vector<double> solid_work;              ///< ledger: work of solid_force on the solid [J]
+    std::vector<physics::SolidAlarm> solid_alarm;///< blow-up bound each passed first (kind 0: none)
+    std::vector<physics::Double3> contact_impulse;///< ledger: time integral of the contact force [N s] (empty without contact)
+    std::vector<double> contact_work;            ///< ledger: work of the contact force on the solid [J]
 };
 
 /// What the gauges measure (solver/gauge_system.h), set once per run: gauge points do not move.
@@ -133,6 +137,14 @@ public:
     /// ledger (false for a sub-cycle that solidRestore will undo).
     virtual void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
                             bool ledger) = 0;
+    /// The solid particles whose alarm a sub-step raised (physics::SolidAlarm: not finite, too
+    /// fast, an intact bond strained past its bound); one small integer reduction, run after
+    /// every step, so a diverging solid stops the run at the end of the step it diverged in
+    /// (0 without solids).
+    virtual std::uint32_t solidsPastBounds() = 0;
+    /// The largest speed of a solid particle now [m/s] (0 without solids; the solid-only
+    /// stepper sizes its chunks of sub-steps with it when contact is on).
+    virtual double solidMaxSpeed() = 0;
     /// Snapshot of the solid state (positions, velocities, bond states) ...
     virtual void solidSave() = 0;
     /// ... and back to it (the boundary block gets the restored positions and velocities).

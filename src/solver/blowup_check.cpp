@@ -44,11 +44,7 @@ struct Offenders {
 
 BlowupCheck::BlowupCheck(const SolverCase& c, const BackendSetup& s, const RunOptions& o)
     : case_(c), setup_(s), opt_(o), every_(o.blowup_check_every) {
-    for (const SolidBody& b : c.solids) {
-        const physics::VcpmElastic el = physics::vcpmElastic(b.youngmod, b.poissratio, b.density);
-        speed_bound_.push_back(physics::solidSpeedBound(el.wave_speed, c.constants.speedsound));
-        outside_.push_back({b.mkbound, 0, 0, 0, -1});
-    }
+    for (const SolidBody& b : c.solids) outside_.push_back({b.mkbound, 0, 0, 0, -1});
     for (std::uint32_t r = 0; r < s.solid.nsolid; ++r) ++outside_[s.solid.body[r]].particles;
 }
 
@@ -120,34 +116,22 @@ std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, 
         d.particles = bad.first;
         return d;
     }
-    // Solids: bond strains, speeds, and the particles outside the domain.
-    Offenders strain, speed;
+    // Solids: the alarms their sub-steps raised (physics::SolidAlarmKind), and the particles
+    // outside the domain.
+    constexpr int kKinds = int(physics::kSolidAlarmContactMotion) + 1;
+    Offenders alarmed[kKinds];
+    double first_time[kKinds] = {};
     std::vector<std::uint32_t> out(outside_.size(), 0);
-    const physics::StepConstants& dom = setup_.step;
-    // The default domain is the particles' bounding box, so a plate that is the edge of the
-    // case (a tank floor) bends out of it at once without leaving anything: a solid particle
-    // counts as outside only beyond the kernel support 2h (the bar, the plate that falls away).
-    const double m = 2.0 * case_.constants.h;
     for (std::uint32_t r = 0; r < so.nsolid; ++r) {
         const std::uint32_t id = so.first_solid + r;
         const physics::Double3 p = st.pos[id];
-        if (p.x < dom.minx - m || p.x > dom.maxx + m || p.y < dom.miny - m || p.y > dom.maxy + m ||
-            p.z < dom.minz - m || p.z > dom.maxz + m)
-            ++out[so.body[r]];
-        double worst = 0;
-        for (int q = 0; q < so.count[r]; ++q) {
-            const std::size_t k = std::size_t(q) * so.nsolid + r;
-            if (st.bond_broken[k]) continue;
-            const std::uint32_t j = (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]]
-                                                                         : so.first_solid + so.partner[k];
-            double dx, dy, dz;
-            const double e = physics::bondStrain(physics::bondVector(p, st.pos[j], dx, dy, dz), so.rest[k]);
-            if (std::fabs(e) > std::fabs(worst)) worst = e;
-        }
-        if (std::fabs(worst) > physics::kMaxBondStrain) strain.add(id, p, worst);
-        const physics::Double3 v = st.solid_vel[r];
-        const double s = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-        if (s > speed_bound_[so.body[r]]) speed.add(id, p, s);
+        if (physics::solidOutside(so.keep, p)) ++out[so.body[r]];
+        if (r >= st.solid_alarm.size()) continue;
+        const physics::SolidAlarm& a = st.solid_alarm[r];
+        if (a.kind == physics::kSolidAlarmNone || a.kind >= std::uint32_t(kKinds)) continue;
+        Offenders& o = alarmed[a.kind];
+        if (o.count == 0 || a.time < first_time[a.kind]) first_time[a.kind] = a.time;
+        o.add(id, p, a.value);
     }
     for (std::size_t b = 0; b < outside_.size(); ++b) {
         SolidOutside& o = outside_[b];
@@ -157,21 +141,57 @@ std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, 
             o.first_time = t;
             warnings_.push_back("warning: solid mkbound=" + std::to_string(o.mkbound) + ": " + std::to_string(out[b]) +
                                 " of " + std::to_string(o.particles) + " particles outside the simulation domain (by more than 2h) at t=" +
-                                num(t) + " s (counted in run.json; solid particles are not excluded)");
+                                num(t) + " s (counted in run.json; each is frozen where it left, at rest, its bonds broken)");
         }
     }
-    const Offenders* hit = strain.count > 0 ? &strain : speed.count > 0 ? &speed : nullptr;
-    if (!hit) return std::nullopt;
-    const bool by_strain = hit == &strain;
-    d.quantity = by_strain ? "solid bond strain" : "solid speed";
-    d.count = hit->count;
-    d.value = hit->worst;
-    d.bound = by_strain ? physics::kMaxBondStrain : speed_bound_[so.body[hit->first[0].id - so.first_solid]];
-    d.particles = hit->first;
-    d.message = std::to_string(hit->count) + " VCPM solid particle(s) with " +
-                (by_strain ? "an intact bond strained to " : "a speed of ") + num(hit->worst) +
-                (by_strain ? "" : " m/s") + " (bound " + num(d.bound) + (by_strain ? ")" : " m/s)");
-    d.likely_option = solidOption(dt);
+    // The kind raised first (on a tie, the lower kind).
+    int kind = 0;
+    for (int k = 1; k < kKinds; ++k)
+        if (alarmed[k].count > 0 && (kind == 0 || first_time[k] < first_time[kind])) kind = k;
+    if (kind == 0) return std::nullopt;
+    const Offenders& hit = alarmed[kind];
+    const physics::ContactParams& cp = so.contact;
+    double bound = NAN;
+    std::string what;
+    switch (kind) {
+    case physics::kSolidAlarmNotFinite:
+        d.quantity = "non-finite state";
+        what = "a non-finite position or velocity";
+        break;
+    case physics::kSolidAlarmStrain:
+        d.quantity = "solid bond strain";
+        bound = physics::kMaxBondStrain;
+        what = "an intact bond strained to " + num(hit.worst) + " (bound " + num(bound) + ")";
+        break;
+    case physics::kSolidAlarmSpeed:
+        d.quantity = "solid speed";
+        bound = so.materials[so.body[hit.first[0].id - so.first_solid]].max_speed;
+        what = "a speed of " + num(hit.worst) + " m/s (bound " + num(bound) + " m/s)";
+        break;
+    case physics::kSolidAlarmContactOverflow:
+        d.quantity = "solid contact candidates";
+        bound = double(so.contact_cap);
+        what = num(hit.worst) + " contact candidates within " + num(cp.list_range) + " m (the list holds " +
+               num(bound) + ")";
+        break;
+    default:
+        d.quantity = "solid contact motion";
+        bound = 0.5 * (cp.list_range - cp.range);
+        what = "a displacement of " + num(hit.worst) + " m in one sub-cycle (bound " + num(bound) +
+               " m, half the contact list's margin)";
+        break;
+    }
+    d.count = hit.count;
+    d.value = kind == physics::kSolidAlarmNotFinite ? NAN : hit.worst;
+    d.bound = bound;
+    d.particles = hit.first;
+    d.onset = first_time[kind];
+    d.message = std::to_string(hit.count) + " VCPM solid particle(s) with " + what + ", first in the sub-step at t=" +
+                num(first_time[kind]) + " s";
+    d.likely_option = kind == physics::kSolidAlarmContactOverflow
+                          ? "VcpmContact (more particles within 1.5 dp of one solid particle than a contact list holds: "
+                            "bodies crushed into each other or into a wall)"
+                          : solidOption(dt);
     return d;
 }
 

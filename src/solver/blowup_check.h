@@ -11,12 +11,13 @@
 /// - a scan of a downloaded state (at every output before it is written, and every
 ///   `-blowupcheck:N` steps): non-finite positions, velocities or densities of any particle,
 ///   fluid excluded as not finite, VCPM solid bonds strained past physics::kMaxBondStrain and
-///   solid speeds past physics::solidSpeedBound. The scan also counts, per solid body, the
-///   particles outside the simulation domain.
+///   solid speeds past VcpmMaterial::max_speed (physics/blowup_bounds.h). The scan also counts,
+///   per solid body, the particles outside the simulation domain (SolidSetup::keep: frozen).
 /// Every check visits the particles in id order on the host, so CPU and GPU runs reach the same
 /// verdict at the same step.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -47,7 +48,8 @@ struct BlowupDiagnosis {
     std::string quantity;       ///< "non-finite state", "solid bond strain", "solid speed", "fluid loss", "dt at DtMin"
     std::string message;        ///< one line for the log
     std::string likely_option;  ///< the option to change, with its value
-    double time = 0;            ///< [s] when it was detected
+    double time = 0;            ///< [s] when it was detected (the end of the step)
+    double onset = NAN;         ///< [s] when a solid sub-step first passed the bound (solids only)
     long long step = 0;
     double value = 0, bound = 0;    ///< the largest offending value and the bound it passed
     std::uint64_t count = 0;        ///< offending particles in all
@@ -95,7 +97,6 @@ private:
     long long every_;
     long long streak_ = 0, last_hits_ = 0;
     long long last_scan_ = 0;  ///< step of the last scan
-    std::vector<double> speed_bound_;  ///< per body
     std::vector<SolidOutside> outside_;
     std::vector<std::string> warnings_;
 };

@@ -3,6 +3,7 @@
 #include "solver/coupling_ledger.h"
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "core/error.h"
@@ -44,6 +45,14 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
         r.impulse.y += j.y;
         r.impulse.z += j.z;
         r.work += st.solid_work[s];
+        if (!st.contact_work.empty()) {
+            r.contact = true;
+            const physics::Double3 c = st.contact_impulse[s];
+            r.contact_impulse.x += c.x;
+            r.contact_impulse.y += c.y;
+            r.contact_impulse.z += c.z;
+            r.contact_work += st.contact_work[s];
+        }
         const physics::Double3 p = st.pos[id];
         r.potential -= m * (g.x * (p.x - pos0[id].x) + g.y * (p.y - pos0[id].y) + g.z * (p.z - pos0[id].z));
         // U = sum_I [1/2 sum_J k dl^2 + 1/2 T (sum_J dl)^2] over intact bonds (each seen from I; vcpm.h).
@@ -79,7 +88,7 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
     return r;
 }
 
-LedgerFile::LedgerFile(const std::string& outdir, long long resume_offset)
+LedgerFile::LedgerFile(const std::string& outdir, long long resume_offset, bool contact)
     : path_((std::filesystem::path(outdir) / "ledger.csv").string()) {
     const bool cont = resume_offset >= 0 && io::cutForResume(path_, resume_offset);
     f_.open(path_, cont ? std::ios::app : std::ios::trunc);
@@ -87,7 +96,8 @@ LedgerFile::LedgerFile(const std::string& outdir, long long resume_offset)
     if (cont) return;
     f_ << "time;fluid_px;fluid_py;fluid_pz;solid_px;solid_py;solid_pz;force_x;force_y;force_z;"
           "impulse_x;impulse_y;impulse_z;work;solid_kinetic;solid_elastic;solid_potential;fluid_kinetic;"
-          "wall_fx;wall_fy;wall_fz\n";
+          "wall_fx;wall_fy;wall_fz"
+       << (contact ? ";contact_impulse_x;contact_impulse_y;contact_impulse_z;contact_work" : "") << "\n";
 }
 
 void LedgerFile::add(const LedgerRow& r) {
@@ -99,6 +109,11 @@ void LedgerFile::add(const LedgerRow& r) {
                   r.solid_momentum.y, r.solid_momentum.z, r.fluid_force.x, r.fluid_force.y, r.fluid_force.z,
                   r.impulse.x, r.impulse.y, r.impulse.z, r.work, r.kinetic, r.elastic, r.potential, r.fluid_kinetic,
                   r.wall_force.x, r.wall_force.y, r.wall_force.z);
+    if (r.contact) {
+        const std::size_t len = std::strlen(line) - 1;  // before the newline
+        std::snprintf(line + len, sizeof line - len, ";%.9g;%.9g;%.9g;%.9g\n", r.contact_impulse.x, r.contact_impulse.y,
+                      r.contact_impulse.z, r.contact_work);
+    }
     f_ << line << std::flush;
     if (!f_) throw Error(path_ + ": cannot write the coupling ledger");
 }

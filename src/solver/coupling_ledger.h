@@ -26,6 +26,9 @@ struct LedgerRow {
     double potential = 0;      ///< solid gravitational energy relative to t = 0 [J]
     double fluid_kinetic = 0;  ///< fluid kinetic energy [J]
     physics::Double3 wall_force{0, 0, 0};  ///< hydrodynamic force on the fixed and moving walls now [N]
+    bool contact = false;                      ///< contact on (VcpmContact): the two below are written
+    physics::Double3 contact_impulse{0, 0, 0}; ///< time integral of the contact forces on the solids [N s]
+    double contact_work = 0;                   ///< their work on the solids (springs and dashpots) [J]
 };
 
 /// The ledger row of a state (id order). `pos0`: initial positions (id order);
@@ -37,12 +40,14 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
                     const std::vector<physics::Double3>& boundary_force);
 
 /// Appends rows to OUTDIR/ledger.csv (header on creation), separated by ';' as the gauge files
-/// and DualSPHysics' CSV files are.
+/// and DualSPHysics' CSV files are. With contact, four more columns: the contact forces'
+/// impulse on the solids (solid-solid pairs cancel: it is what walls gave) and their work.
 class LedgerFile {
 public:
     /// `resume_offset` >= 0: a restarted run: the file is cut back to that many bytes (what it
     /// held at the checkpoint) and continued; a new file when it is not there.
-    explicit LedgerFile(const std::string& outdir, long long resume_offset = -1);
+    /// `contact`: with the contact columns.
+    explicit LedgerFile(const std::string& outdir, long long resume_offset = -1, bool contact = false);
     void add(const LedgerRow& r);
     /// Bytes written so far (a restart file keeps it).
     long long offset() { return (long long)f_.tellp(); }

@@ -148,6 +148,16 @@ public:
         if (n > 0) solidSubCycle(t0, dt, n, motions);
         solidToBoundary(dt * n, ledger);
     }
+    std::uint32_t solidsPastBounds() override {
+        if (solid_.n == 0) return 0;
+        return exec_.reduce(0u, solid_.n, 0u,
+                            SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(), subCycleContact()},
+                            CountCombine{});
+    }
+    double solidMaxSpeed() override {
+        if (solid_.n == 0) return 0.0;
+        return exec_.reduce(0u, solid_.n, 0.0, SolidSpeedPass{solid_.vel.data()}, MaxCombine{});
+    }
     void solidSave() override { solid_.save(); }
     void solidRestore() override {
         if (solid_.n == 0) return;
@@ -447,9 +457,29 @@ private:
             assignFrom(solid_motions_, motions);
             cm.motions = solid_motions_.data();
         }
+        const SubCycleContact ct = subCycleContact();
         const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
-                                 setup_.step.gx, setup_.step.gy, setup_.step.gz};
+                                 setup_.step.gx, setup_.step.gy, setup_.step.gz, ct};
         exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, std::max(solid_.n, solid_.nclamp), body);
+    }
+
+    /// The contact views of the solids' sub-cycle (off without contact).
+    SubCycleContact subCycleContact() {
+        SubCycleContact ct;
+        if (!solid_.contact_on) return ct;
+        ct.on = true;
+        ct.w.cell_start = cs_bound_.data();
+        ct.w.id = p_.id.data();
+        ct.w.pos = p_.pos.data();
+        ct.w.velrho = p_.velrho.data();
+        ct.w.first_solid = solid_.first;
+        ct.w.nsolid = solid_.n;
+        ct.w.clamp_id = solid_.clamp_pid.data();
+        ct.g = setup_.grid;
+        ct.cp = solid_.contact;
+        ct.cl = solid_.contactList();
+        ct.force = solid_.contact_force.data();
+        return ct;
     }
 
     /// Solid positions and velocities into the boundary block after a sub-cycle of length dt;

@@ -350,8 +350,9 @@ Run control:
                        that was not interrupted. In the OUTDIR it was written to, the part
                        files, gauge files, ledger and Run.out are continued from it
   -blowupcheck:N       scan the whole state for a blow-up every N >= 0 steps (default
-                       100; 0: only at output times). Fluid loss (MinFluidStop) and dt
-                       stuck at DtMin are checked after every step
+                       100; 0: only at output times). Fluid loss (MinFluidStop), dt
+                       stuck at DtMin and VCPM solids (non-finite, bond strain past 1,
+                       speed past 10 max(c_S, c0)) are checked within every step
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
                        files in OUTDIR/vtk), none; DualSPHysics' binx is taken as h5 and
                        info as run.json (a note each)

@@ -2,6 +2,7 @@
 /// \file run_report.cpp
 #include "solver/run_report.h"
 
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 
@@ -81,6 +82,7 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
         j.value("message", d.message);
         j.value("likely_option", d.likely_option);
         j.value("time_s", d.time);
+        if (std::isfinite(d.onset)) j.value("onset_time_s", d.onset);
         j.value("step", d.step);
         j.value("value", d.value);
         j.value("bound", d.bound);

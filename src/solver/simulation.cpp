@@ -211,7 +211,8 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     const CheckpointData* cont = continuing_ ? resume_.get() : nullptr;  // files continued
     if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir);
     if (!setup_.solid.empty())
-        ledger_ = std::make_shared<Ledger>(opt_.outdir, cont ? cont->integer("ledger/offset") : -1);
+        ledger_ = std::make_shared<Ledger>(opt_.outdir, cont ? cont->integer("ledger/offset") : -1,
+                                           setup_.solid.contact_on);
     if (!c.gauges.empty()) gauges_ = std::make_shared<GaugeSystem>(c, setup_, opt_.outdir, log_, resume_.get());
     sum_.case_name = c.name;
     sum_.backend = backend_->name();
@@ -265,7 +266,10 @@ bool Simulation::checkStep(double t, long long step, double dt, std::uint32_t ac
         blownUp(std::move(*d));
         return false;
     }
-    if (output_due || !h.check.scanDue(step)) return true;
+    // Solids: the backend's per-step test; when it finds a particle past a bound, the scan now
+    // (it names the particles and the option; a state that passes it goes on).
+    const bool solid_alarm = !setup_.solid.empty() && backend_->solidsPastBounds() > 0;
+    if (output_due || (!solid_alarm && !h.check.scanDue(step))) return true;
     HostState st;
     backend_->download(st);
     return healthy(st, t, step);

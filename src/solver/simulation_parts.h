@@ -21,7 +21,7 @@ struct Simulation::Output {
 
 struct Simulation::Ledger {
     LedgerFile file;
-    Ledger(const std::string& dir, long long resume_offset) : file(dir, resume_offset) {}
+    Ledger(const std::string& dir, long long resume_offset, bool contact) : file(dir, resume_offset, contact) {}
 };
 
 struct Simulation::Health {

@@ -27,6 +27,14 @@ struct SolidArrays {
     Buf<physics::VcpmMaterial> materials;
     Buf<physics::Double3> pos, pos_half, vel, vel0, fluid_force;
     Buf<physics::Double3> impulse;  ///< ledger: sum of F dt per particle [N s]
+    Buf<physics::SolidAlarm> alarm; ///< blow-up alarms (physics/blowup_bounds.h)
+    // Contact (empty without it; physics/solid_contact.h).
+    bool contact_on = false;
+    physics::ContactParams contact;
+    std::uint32_t contact_cap = 0;
+    Buf<std::uint32_t> contact_count, contact_entry, clamp_pid;
+    Buf<physics::Double3> contact_force, contact_pos0, contact_impulse, contact_impulse_saved;
+    Buf<double> contact_work, contact_work_saved;
     Buf<physics::Double3> pos_saved, vel_saved;
     Buf<physics::Double3> load_force, load_rate;  ///< empty without point loads
     Buf<std::uint8_t> clamp_count;
@@ -35,12 +43,14 @@ struct SolidArrays {
     Buf<std::int16_t> clamp_object;
     Buf<double> clamp_sum;
     double t0 = 0, span = 0;  ///< the current sub-cycle's start time and length
+    physics::SolidKeepBox keep;
 
     void init(const SolidSetup& s) {
         const physics::Double3 zero3{0, 0, 0};
         n = s.nsolid;
         nclamp = s.nclamp;
         first = s.first_solid;
+        keep = s.keep;
         assignFrom(count, s.count);
         assignFrom(partner, s.partner);
         assignFrom(rest, s.rest);
@@ -56,6 +66,19 @@ struct SolidArrays {
         assignFrom(sum, std::vector<double>(n, 0.0));
         assignFrom(impulse, std::vector<physics::Double3>(n, zero3));
         assignFrom(work, std::vector<double>(n, 0.0));
+        assignFrom(alarm, std::vector<physics::SolidAlarm>(n));
+        contact_on = s.contact_on;
+        if (contact_on) {
+            contact = s.contact;
+            contact_cap = s.contact_cap;
+            assignFrom(contact_count, std::vector<std::uint32_t>(n, 0u));
+            assignFrom(contact_entry, std::vector<std::uint32_t>(std::size_t(contact_cap) * n, 0u));
+            assignFrom(clamp_pid, s.clamp_id.empty() ? std::vector<std::uint32_t>(1, 0u) : s.clamp_id);
+            assignFrom(contact_force, std::vector<physics::Double3>(n, zero3));
+            assignFrom(contact_pos0, s.pos);
+            assignFrom(contact_impulse, std::vector<physics::Double3>(n, zero3));
+            assignFrom(contact_work, std::vector<double>(n, 0.0));
+        }
         assignFrom(slot, std::vector<std::uint32_t>(n, 0));
         assignFrom(clamp_count, s.clamp_count);
         assignFrom(clamp_partner, s.clamp_partner);
@@ -83,6 +106,13 @@ struct SolidArrays {
         st.load_rate = load_rate.empty() ? nullptr : load_rate.data();
         st.t0 = t0;
         st.span = span;
+        st.keep = keep;
+        st.alarm = alarm.data();
+        if (contact_on) {
+            st.contact_force = contact_force.data();
+            st.contact_impulse = contact_impulse.data();
+            st.contact_work = contact_work.data();
+        }
         return st;
     }
 
@@ -95,6 +125,17 @@ struct SolidArrays {
         b.flags = flags.data();
         b.broken = broken.data();
         return b;
+    }
+
+    physics::ContactList contactList() {
+        physics::ContactList l;
+        if (!contact_on) return l;
+        l.n = n;
+        l.cap = contact_cap;
+        l.count = contact_count.data();
+        l.entry = contact_entry.data();
+        l.pos0 = contact_pos0.data();
+        return l;
     }
 
     physics::ClampNodes clamps() {
@@ -126,6 +167,8 @@ struct SolidArrays {
         f("clamp_start", clamp_start);
         f("clamp_end", clamp_end);
         f("clamp_sum", clamp_sum);
+        f("contact_impulse", contact_impulse);  // empty without contact
+        f("contact_work", contact_work);
     }
 
     /// Snapshot of the midpoint coupling: positions, velocities and bond states ...
@@ -133,12 +176,20 @@ struct SolidArrays {
         copyBuffer(pos_saved, pos);
         copyBuffer(vel_saved, vel);
         copyBuffer(broken_saved, broken);
+        if (contact_on) {
+            copyBuffer(contact_impulse_saved, contact_impulse);
+            copyBuffer(contact_work_saved, contact_work);
+        }
     }
     /// ... and back to it.
     void restore() {
         copyBuffer(pos, pos_saved);
         copyBuffer(vel, vel_saved);
         copyBuffer(broken, broken_saved);
+        if (contact_on) {
+            copyBuffer(contact_impulse, contact_impulse_saved);
+            copyBuffer(contact_work, contact_work_saved);
+        }
     }
 
     /// The solid part of HostState (solid-index order, slot-major bond states).
@@ -148,6 +199,11 @@ struct SolidArrays {
         copyToHost(broken, out.bond_broken);
         copyToHost(impulse, out.solid_impulse);
         copyToHost(work, out.solid_work);
+        copyToHost(alarm, out.solid_alarm);
+        if (contact_on) {
+            copyToHost(contact_impulse, out.contact_impulse);
+            copyToHost(contact_work, out.contact_work);
+        }
     }
 };
 

@@ -8,6 +8,8 @@
 
 #include "core/error.h"
 #include "core/format.h"
+#include "physics/blowup_bounds.h"
+#include "physics/solid_contact.h"
 #include "solver/solver_case.h"
 
 namespace seaspring::solver {
@@ -41,8 +43,9 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         physics::VcpmMaterial mat = physics::vcpmMaterial(dim, young, poisson, sb.density, dp, sb.damping, sb.critstretch);
         mat.damp_rate = physics::vcpmMaterial(dim, sb.youngmod, sb.poissratio, sb.density, dp, sb.damping,
                                               sb.critstretch).damp_rate;
-        s.materials.push_back(mat);
         const physics::VcpmElastic el = physics::vcpmElastic(young, poisson, sb.density);
+        mat.max_speed = physics::solidSpeedBound(el.wave_speed, c.constants.speedsound);
+        s.materials.push_back(mat);
         dt = std::min(dt, physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
         const physics::VcpmMaterial& m = s.materials.back();
         s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + shortText(sb.density, 6) +
@@ -53,7 +56,31 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
                                shortText(2 * m.t_half, 6) + ", damping rate " + shortText(m.damp_rate, 6) + " 1/s" +
                                (sb.critstretch > 0 ? ", breaks at stretch " + shortText(sb.critstretch, 6) : ""));
     }
+    // Contact (physics/solid_contact.h): its sub-step limit for a pair of particles of the same
+    // body (half the mass: the stiffest case) and against a wall.
+    if (c.params.vcpm_contact) {
+        s.contact_on = true;
+        s.contact.range = dp;
+        s.contact.list_range = 1.5 * dp;
+        s.contact.stiffness = c.params.vcpm_contact_stiffness;
+        s.contact.damping = c.params.vcpm_contact_damping;
+        s.contact.friction = c.params.vcpm_contact_friction;
+        s.contact_cap = dim == 3 ? 32u : 16u;
+        double dt_contact = 1e300;
+        for (const physics::VcpmMaterial& m : s.materials)
+            dt_contact = std::min(dt_contact, physics::contactTimeStep(0.5 / m.inv_mass,
+                                                                      physics::contactStiffness(m, s.contact.stiffness)));
+        s.contact_dt = dt_contact;
+        if (dt_contact < dt) dt = dt_contact;
+        s.body_lines.push_back("contact: r_c = dp, k = " + shortText(s.contact.stiffness, 6) + " k_1, damping " +
+                               shortText(s.contact.damping, 6) + " of critical, friction " + shortText(s.contact.friction, 6) +
+                               ", sub-step limit " + shortText(dt_contact, 6) + " s");
+    }
     s.dt = dt;
+    // Solid particles beyond the domain by more than the kernel support are frozen (vcpm.h).
+    s.keep = physics::solidKeepBox(physics::Double3{c.domain_min.x, c.domain_min.y, c.domain_min.z},
+                                   physics::Double3{c.domain_max.x, c.domain_max.y, c.domain_max.z},
+                                   2.0 * c.constants.h);
     s.body.resize(n);
     s.pos.resize(n);
     s.vel.resize(n);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "physics/sph_types.h"
+#include "physics/solid_contact.h"
 #include "physics/vcpm.h"
 
 namespace seaspring::solver {
@@ -40,6 +41,14 @@ struct SolidSetup {
     std::vector<physics::Double3> clamp_pos; ///< initial position of each clamp node
     std::vector<std::int16_t> clamp_object;  ///< motion object moving it, -1 when fixed
 
+    /// The simulation domain widened by 2h: a solid particle beyond it is frozen there (at rest,
+    /// its bonds broken) and counted per body (physics::SolidKeepBox).
+    physics::SolidKeepBox keep;
+    /// Contact (VcpmContact 1; physics/solid_contact.h).
+    bool contact_on = false;
+    physics::ContactParams contact;
+    std::uint32_t contact_cap = 0;  ///< candidates per particle
+    double contact_dt = 0;          ///< its sub-step limit [s] (included in dt)
     double dt = 0;                 ///< solid sub-step: min over bodies of VcpmDtCoef dp / c_S [s]
     std::uint64_t bonds = 0, clamp_bonds = 0;  ///< solid-solid pairs (once), clamp bonds
     std::vector<std::string> body_lines;       ///< one printable line per body

@@ -75,6 +75,15 @@ StepResult SolidOnlyStepper::advance(double time, const StepWindow& window) {
     long long n = std::max(1LL, (long long)std::ceil((window.until - time) / dt - 1e-9));
     if (clamp_moves_) n = 1;
     if (window.steps_left >= 0) n = std::min(n, window.steps_left);
+    const SolidSetup& solid = ctx_.setup().solid;
+    if (solid.contact_on) {
+        // Contact lists are made from the boundary block's cells: sort it at the solids' positions
+        // and take no more sub-steps than the lists' margin allows (physics::contactChunk).
+        ctx_.backend().divide(false);
+        const physics::StepConstants& sc = ctx_.setup().step;
+        const double g = std::sqrt(sc.gx * sc.gx + sc.gy * sc.gy + sc.gz * sc.gz);
+        n = physics::contactChunk(ctx_.backend().solidMaxSpeed(), g, dt, solid.contact, n);
+    }
     ctx_.timers().time(PhaseTimers::Integrate, [&] {
         double t = time;
         for (long long left = n; left > 0;) {  // Backend::solidSteps takes an int count

@@ -9,6 +9,7 @@
 ///        without a GPU; tools/device_test.sh runs it on one.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -79,6 +80,9 @@ void expectSameSolidsAndForces(Backend& ref, Backend& b, const std::string& phas
     EXPECT_TRUE(sameBytes(x.bond_broken, y.bond_broken)) << phase << ": bond states";
     EXPECT_TRUE(sameBytes(x.solid_impulse, y.solid_impulse)) << phase << ": ledger impulse";
     EXPECT_TRUE(sameBytes(x.solid_work, y.solid_work)) << phase << ": ledger work";
+    EXPECT_TRUE(sameBytes(x.solid_alarm, y.solid_alarm)) << phase << ": blow-up alarms";
+    EXPECT_TRUE(sameBytes(x.contact_impulse, y.contact_impulse)) << phase << ": ledger contact impulse";
+    EXPECT_TRUE(sameBytes(x.contact_work, y.contact_work)) << phase << ": ledger contact work";
     std::vector<physics::Double3> fx, fy;
     ref.boundaryForces(fx);
     b.boundaryForces(fy);
@@ -302,6 +306,38 @@ TYPED_TEST(BackendPhases, SolidSubStepsCouplingAndBoundaryForces) {
 
 TYPED_TEST(BackendPhases, SolidSubStepsCouplingMdbc) {
     plateCoupledSteps<TypeParam>("phases_plate_mdbc", "hydrostatic_plate_mdbc/HydrostaticPlateMdbc_Def.xml");
+}
+
+// Contact of VCPM solids (physics/solid_contact.h): two blocks on a floor, solid-wall and
+// solid-solid contacts of two materials with friction, driven by gravity from the first sub-step;
+// the lists, forces, positions and the contact ledger after each sub-cycle, the blocks' speeds
+// (the solid-only stepper's chunk rule) and the alarms.
+TYPED_TEST(BackendPhases, SolidContactSubSteps2D) {
+    const std::string dir = test::scratch("phases_contact");
+    const std::string kase = test::generateCaseFile(dir, "contact", std::string(SEASPRING_SOURCE_DIR) +
+                                                                       "/tests/data/phases/ContactBlocks2D_Def.xml");
+    Pair<TypeParam> p(kase, 0);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    ASSERT_TRUE(p.setup.solid.contact_on);
+    const double dt = p.setup.solid.dt;
+    p.both([&](Backend& b) { b.divide(false); });
+    for (int s = 0; s < 4; ++s) {
+        const std::string at = "contact sub-cycle " + std::to_string(s);
+        p.both([&](Backend& b) {
+            b.solidSteps(s * 40 * dt, dt, 40, p.motions(s * 40 * dt, 40 * dt), true);
+            b.divide(false);
+        });
+        expectSameFields(*p.ref, *p.b, at, kAfterDivide);
+        expectSameSolidsAndForces(*p.ref, *p.b, at);
+        EXPECT_EQ(p.ref->solidsPastBounds(), p.b->solidsPastBounds()) << at;
+        EXPECT_EQ(p.ref->solidMaxSpeed(), p.b->solidMaxSpeed()) << at;
+    }
+    solver::HostState st;
+    p.ref->download(st);
+    double work = 0;
+    for (double w : st.contact_work) work += std::fabs(w);
+    EXPECT_GT(work, 0.0) << "no contact acted: the test would compare nothing";
+    EXPECT_EQ(p.ref->solidsPastBounds(), 0u);
 }
 
 TYPED_TEST(BackendPhases, GaugesOnTheSortedState) {

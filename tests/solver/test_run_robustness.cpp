@@ -6,6 +6,8 @@
 ///        with a clear error; SIGINT/SIGTERM end a run cleanly; an OUTDIR never mixes two runs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -76,13 +78,14 @@ TEST(RunRobustness, SolidBlowupBlamesVcpmSubsteps) {
     const std::string kase =
         test::generateCaseFile(dir, "Plate", test::caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"), 0.025);
     // One solid sub-step per fluid step: 23 times the solid's stability limit. The message used
-    // to blame VcpmDtCoef, and part files held displacements of 1e19 m.
+    // to blame VcpmDtCoef, and part files held displacements of 1e19 m. The default checks (no
+    // scan of the state before the first output) stop the run at the end of the step in which
+    // a sub-step first passed a bound.
     std::vector<double> output_times;
     const test::SolverRun r = test::runCpu(
         kase, dir + "/out", 2,
         [](solver::RunOptions& o) {
             o.solid_substeps = 1;
-            o.blowup_check_every = 1;  // a scan after every step
             o.tmax = 0.01;
         },
         [&](double t, long long, const solver::HostState&) { output_times.push_back(t); });
@@ -94,18 +97,39 @@ TEST(RunRobustness, SolidBlowupBlamesVcpmSubsteps) {
     ASSERT_FALSE(d.particles.empty());
     EXPECT_GE(d.particles[0].id, 744u);  // the solid block
     EXPECT_LT(d.particles[0].id, 744u + 78u);
-    // The last good state is kept: written after the t = 0 output, before the blow-up.
+    ASSERT_TRUE(std::isfinite(d.onset));
+    EXPECT_LE(d.onset, d.time);
+    EXPECT_GT(d.onset, d.time - r.summary.dt_last) << "caught " << d.time - d.onset << " s after it happened";
+    EXPECT_LT(d.step, 50);
+    // The last good state is kept: the t = 0 output, the only state scanned before (the
+    // failing one is never written).
+    ASSERT_EQ(output_times.size(), 1u);
+    EXPECT_EQ(r.summary.last_good_time, 0.0);
+    // With a scan after every step (-blowupcheck:1) the last good state is the step before.
+    output_times.clear();
+    const test::SolverRun every = test::runCpu(
+        kase, dir + "/every", 2,
+        [](solver::RunOptions& o) {
+            o.solid_substeps = 1;
+            o.blowup_check_every = 1;
+            o.tmax = 0.01;
+        },
+        [&](double t, long long, const solver::HostState&) { output_times.push_back(t); });
+    ASSERT_TRUE(every.summary.blowup.has_value());
+    EXPECT_EQ(every.summary.blowup->step, d.step);
     ASSERT_EQ(output_times.size(), 2u);
     EXPECT_GT(output_times[1], 0.0);
     EXPECT_LT(output_times[1], d.time);
-    EXPECT_EQ(r.summary.last_good_time, output_times[1]);
+    EXPECT_EQ(every.summary.last_good_time, output_times[1]);
 }
 
-TEST(RunRobustness, SolidLeavingTheDomainIsCountedPerBody) {
+TEST(RunRobustness, SolidLeavingTheDomainIsFrozenAndCountedPerBody) {
     const std::string dir = test::scratch("robust_fall");
     // No clamp, no damping: the beam falls freely and leaves the domain (0.2 m below it) at 0.2 s;
-    // by 0.5 s all of it lies more than 2h below (the count's margin: a plate at the edge of a
-    // case may bend a little out of the default domain without being counted).
+    // by 0.5 s all of it lies more than 2h below (the margin: a plate at the edge of a case may
+    // bend a little out of the default domain without being frozen or counted). Each particle
+    // freezes where it crossed, at rest, with its bonds broken; free fall would have taken it
+    // 1 m further down.
     const std::string kase = beam(dir, "Fall", "mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\" damping=\"1\"",
                                   "density=\"2500\" youngmod=\"3e5\" poissratio=\"0.3\"");
     const test::SolverRun r = test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) {
@@ -119,6 +143,19 @@ TEST(RunRobustness, SolidLeavingTheDomainIsCountedPerBody) {
     EXPECT_EQ(o.particles, 750u);
     EXPECT_EQ(o.outside, 750u);
     EXPECT_GT(o.first_time, 0.15);
+    const solver::SolverCase& c = r.kase;
+    const double floor = c.domain_min.z - 2.0 * c.constants.h;
+    const double g = std::fabs(c.constants.gravity.z);
+    double lowest = 1e300;
+    for (std::uint32_t i = 0; i < 750; ++i) {
+        const physics::Double3 v = r.state.solid_vel[i];
+        EXPECT_EQ(v.x * v.x + v.y * v.y + v.z * v.z, 0.0) << i;
+        lowest = std::min(lowest, r.state.pos[c.bonds->first_solid + i].z);
+    }
+    // One sub-step past the crossing at most: v dt with v = g t, t <= 0.5 s.
+    EXPECT_LT(floor - lowest, g * 0.5 * r.summary.solid_dt) << "lowest " << lowest << ", box floor " << floor;
+    EXPECT_GT(floor - lowest, 0.0);
+    EXPECT_EQ(r.summary.broken_bonds, c.bonds->bondSlots() / 2);  // no clamp bonds
 }
 
 // The hydrostatic plate is the floor of its tank, so its lowest row is the edge of the default

@@ -94,7 +94,16 @@ struct Block {
     }
     SolidBonds bonds() { return SolidBonds{n, count.data(), partner.data(), rest.data(), flags.data(), broken.data()}; }
     SolidState state() {
-        return {pos.data(), pos_half.data(), vel.data(), vel0.data(), sum.data(), ffluid.data(), body.data(), &mat};
+        SolidState st;
+        st.pos = pos.data();
+        st.pos_half = pos_half.data();
+        st.vel = vel.data();
+        st.vel0 = vel0.data();
+        st.sum = sum.data();
+        st.fluid_force = ffluid.data();
+        st.body = body.data();
+        st.material = &mat;
+        return st;  // no alarms array: raiseSolidAlarm ignores a null one
     }
 };
 
