@@ -77,14 +77,19 @@ EOF
 }
 
 if want liao; then
-  echo "== Liao 2015 plate, dp 2 mm (2 particles thick), contact on, GPU" | tee -a "$table"
+  echo "== Liao 2015 plate, dp 2 mm (2 particles thick), GPU, without and with contact" | tee -a "$table"
+  cp "$root/cases/liao2015_plate/DambreakGateTimeSeries.csv" "$work/"
+  cp "$root/cases/liao2015_plate/Liao2015Plate2D_Def.xml" "$work/Liao_Def.xml"
   with_contact "$root/cases/liao2015_plate/Liao2015Plate2D_Def.xml" "$work/LiaoC_Def.xml"
-  "$bin/gencase" "$work/LiaoC_Def.xml" "$work/liaoc" -dp:0.002 >/dev/null
-  start=$(date +%s)
-  "$bin/seaspring" -gpu -overwrite -tmax:0.45 -tout:0.005 -progress:0 "$work/liaoc" "$work/o_liaoc" >"$work/liaoc.log" 2>&1
-  echo "  rc=$? wall $(( $(date +%s) - start )) s; $(grep -E 'Stopped|Finished' "$work/liaoc.log" | head -1)" | tee -a "$table"
-  echo "  lowest plate particle: $(lowest_solid "$work/o_liaoc")" | tee -a "$table"
-  grep -E "contact:|VCPM sub-step|Solids:" "$work/liaoc.log" | sed 's/^/  /' | tee -a "$table"
+  for c in liao liaoc; do
+    def="$work/Liao_Def.xml"; [[ $c == liaoc ]] && def="$work/LiaoC_Def.xml"
+    "$bin/gencase" "$def" "$work/$c" -dp:0.002 >"$work/${c}_gencase.log" 2>&1 || { echo "gencase failed"; tail -2 "$work/${c}_gencase.log"; }
+    start=$(date +%s)
+    "$bin/seaspring" -gpu -overwrite -tmax:0.45 -tout:0.005 -progress:0 "$work/$c" "$work/o_$c" >"$work/$c.log" 2>&1
+    echo "  $c: rc=$? wall $(( $(date +%s) - start )) s; $(grep -E 'Stopped|Finished' "$work/$c.log" | head -1)" | tee -a "$table"
+    echo "  $c: lowest plate particle $(lowest_solid "$work/o_$c")" | tee -a "$table"
+  done
+  grep -E "contact:|Solids:" "$work/liaoc.log" | sed 's/^/  /' | tee -a "$table"
 fi
 
 close_pairs() {  # OUTDIR DP: solid particle pairs closer than dp/2 in the last part file
@@ -120,10 +125,12 @@ fi
 if want cost; then
   echo "== cost of the per-step solid checks (Antoci gate 2D, 4000 steps, GPU, back to back)" | tee -a "$table"
   [[ -d "$root/build-dev/base" ]] || tar -xJf "$root/build-dev/base.tar.xz" -C "$root/build-dev"
-  "$bin/gencase" "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" "$work/ant" >/dev/null
+  for b in base bin; do  # each build's own gencase: the resolved case lists its parameters
+    "$root/build-dev/$b/gencase" "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" "$work/ant_$b" >/dev/null
+  done
   for r in 1 2; do
     for b in base bin; do
-      "$root/build-dev/$b/seaspring" -gpu -overwrite -nsteps:4000 -sv:none -progress:0 "$work/ant" "$work/o_ant_$b" >"$work/ant_$b.log" 2>&1
+      "$root/build-dev/$b/seaspring" -gpu -overwrite -nsteps:4000 -sv:none -progress:0 "$work/ant_$b" "$work/o_ant_$b" >"$work/ant_$b.log" 2>&1
       echo "  $b run $r: $(grep -o 'in [0-9.]* s wall (loop [0-9.]* s)' "$work/ant_$b.log") $(grep -o 'State hash: [0-9a-f]*' "$work/ant_$b.log")" | tee -a "$table"
     done
   done
