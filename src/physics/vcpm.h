@@ -119,6 +119,7 @@ struct SolidBonds {
     const double* rest = nullptr;         ///< rest length L0 [m]
     const std::uint8_t* flags = nullptr;  ///< VcpmBondFlag
     std::uint8_t* broken = nullptr;       ///< 1 once the bond has broken (never heals)
+    const double* kfac = nullptr;         ///< surface correction of each slot's stiffness (null: none; vcpm_surface.h)
 };
 
 /// Clamp nodes: the boundary particles that clamp bonds reach. Their positions are prescribed
@@ -313,7 +314,8 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
         const double sum_j = clamp ? cn.sum[j] : st.sum[j];
         double dx, dy, dz;
         const double len = bondVector(p, pj, dx, dy, dz);
-        const double fm = bondForce(bondStiffness(m, b.flags[k]), m.t_half, halfElongation(len, b.rest[k]), sum_s, sum_j) / len;
+        const double kb = b.kfac ? bondStiffness(m, b.flags[k]) * b.kfac[k] : bondStiffness(m, b.flags[k]);
+        const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), sum_s, sum_j) / len;
         fx += fm * dx;
         fy += fm * dy;
         fz += fm * dz;

@@ -65,7 +65,8 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
             const std::uint32_t j_id = clamp ? so.clamp_id[so.partner[k]] : so.first_solid + so.partner[k];
             double dx, dy, dz;
             const double dl = physics::halfElongation(physics::bondVector(p, st.pos[j_id], dx, dy, dz), so.rest[k]);
-            springs += physics::bondSpringEnergy(physics::bondStiffness(mat, so.flags[k]), dl, clamp);
+            const double kb = physics::bondStiffness(mat, so.flags[k]) * (so.kfac.empty() ? 1.0 : so.kfac[k]);
+            springs += physics::bondSpringEnergy(kb, dl, clamp);
             sum += dl;
         }
         r.elastic += springs + physics::siteVolumetricEnergy(mat.t_half, sum);

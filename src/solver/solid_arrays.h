@@ -22,7 +22,7 @@ struct SolidArrays {
     std::uint32_t n = 0, nclamp = 0, first = 0;
     Buf<std::uint8_t> count, flags, broken, broken_saved;
     Buf<std::uint32_t> partner, slot;
-    Buf<double> rest, sum, work;
+    Buf<double> rest, sum, work, kfac;
     Buf<std::uint16_t> body;
     Buf<physics::VcpmMaterial> materials;
     Buf<physics::Double3> pos, pos_half, vel, vel0, fluid_force;
@@ -55,6 +55,7 @@ struct SolidArrays {
         assignFrom(partner, s.partner);
         assignFrom(rest, s.rest);
         assignFrom(flags, s.flags);
+        assignFrom(kfac, s.kfac);
         assignFrom(broken, std::vector<std::uint8_t>(s.flags.size(), 0));
         assignFrom(body, s.body);
         assignFrom(materials, s.materials);
@@ -124,6 +125,7 @@ struct SolidArrays {
         b.rest = rest.data();
         b.flags = flags.data();
         b.broken = broken.data();
+        b.kfac = kfac.empty() ? nullptr : kfac.data();
         return b;
     }
 

@@ -10,6 +10,7 @@
 #include "core/format.h"
 #include "physics/blowup_bounds.h"
 #include "physics/solid_contact.h"
+#include "physics/vcpm_surface.h"
 #include "solver/solver_case.h"
 
 namespace seaspring::solver {
@@ -46,6 +47,7 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         const physics::VcpmElastic el = physics::vcpmElastic(young, poisson, sb.density);
         mat.max_speed = physics::solidSpeedBound(el.wave_speed, c.constants.speedsound);
         s.materials.push_back(mat);
+        s.poisson.push_back(poisson);
         dt = std::min(dt, physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
         const physics::VcpmMaterial& m = s.materials.back();
         s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + shortText(sb.density, 6) +
@@ -201,7 +203,94 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
             s.clamp_slot[k] = l[q].second;
         }
     }
+    if (c.params.vcpm_surface_correction) surfaceCorrection(s);
     return s;
+}
+
+void surfaceCorrection(SolidSetup& s) {
+    const std::uint32_t n = s.nsolid;
+    const int dim = s.dim;
+    // The rest vector and stiffness of each bond of particle r.
+    auto bondsOf = [&](std::uint32_t r, std::vector<physics::Double3>& rv, std::vector<double>& kv) {
+        rv.clear();
+        kv.clear();
+        const physics::VcpmMaterial& m = s.materials[s.body[r]];
+        for (int q = 0; q < s.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * n + r;
+            const physics::Double3 pj =
+                (s.flags[k] & physics::kBondClamp) ? s.clamp_pos[s.partner[k]] : s.pos[s.partner[k]];
+            rv.push_back(physics::Double3{pj.x - s.pos[r].x, pj.y - s.pos[r].y, pj.z - s.pos[r].z});
+            kv.push_back(physics::bondStiffness(m, s.flags[k]));
+        }
+    };
+    // The bulk energies per body and axis, from the full stencil at the lattice spacing.
+    std::vector<physics::Double3> stencil;
+    std::vector<std::uint8_t> second;
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int k = -1; k <= 1; ++k) {
+                const int nz = (i != 0) + (j != 0) + (k != 0);
+                if (nz == 0 || nz == 3 || (dim == 2 && j != 0)) continue;
+                stencil.push_back(physics::Double3{double(i), double(j), double(k)});
+                second.push_back(nz == 2);
+            }
+    const double dp = s.rest.empty() ? 1.0 : [&] {
+        for (std::size_t k = 0; k < s.rest.size(); ++k)
+            if (!(s.flags[k] & physics::kBondSecond) && s.rest[k] > 0) return s.rest[k];
+        return 1.0;
+    }();
+    // The lateral strain of a uniaxial stress: nu/(1-nu) in 2D plane strain, nu in 3D.
+    auto lateral = [&](std::size_t b) {
+        const double nu = s.poisson[b];
+        return dim == 2 ? nu / (1.0 - nu) : nu;
+    };
+    std::vector<physics::Double3> bulk(s.materials.size());
+    for (std::size_t b = 0; b < s.materials.size(); ++b) {
+        std::vector<physics::Double3> rv;
+        std::vector<double> kv;
+        for (std::size_t q = 0; q < stencil.size(); ++q) {
+            rv.push_back(physics::Double3{stencil[q].x * dp, stencil[q].y * dp, stencil[q].z * dp});
+            kv.push_back(second[q] ? s.materials[b].k_second : s.materials[b].k_first);
+        }
+        double e[3];
+        for (int d = 0; d < 3; ++d) {
+            double p, v;
+            physics::uniformStrainEnergy(rv, kv, s.materials[b].t_half, d, lateral(b), dim, p, v);
+            e[d] = p + v;
+        }
+        bulk[b] = physics::Double3{e[0], e[1], e[2]};
+    }
+    // g per particle and axis (1 for a complete site, and along y in 2D).
+    std::vector<physics::Double3> g(n, physics::Double3{1, 1, 1});
+    std::vector<physics::Double3> rv;
+    std::vector<double> kv;
+    for (std::uint32_t r = 0; r < n; ++r) {
+        if (s.count[r] == s.max_bonds) continue;
+        bondsOf(r, rv, kv);
+        double f[3] = {1, 1, 1};
+        const physics::Double3 w = bulk[s.body[r]];
+        const double wd[3] = {w.x, w.y, w.z};
+        for (int d = 0; d < 3; ++d) {
+            if (dim == 2 && d == 1) continue;
+            double p, v;
+            physics::uniformStrainEnergy(rv, kv, s.materials[s.body[r]].t_half, d, lateral(s.body[r]), dim, p, v);
+            f[d] = physics::surfaceFactor(wd[d], p, v);
+        }
+        g[r] = physics::Double3{f[0], f[1], f[2]};
+    }
+    s.kfac.assign(s.rest.size(), 1.0);
+    const physics::Double3 one{1, 1, 1};
+    for (std::uint32_t r = 0; r < n; ++r) {
+        bondsOf(r, rv, kv);
+        for (int q = 0; q < s.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * n + r;
+            const bool clamp = (s.flags[k] & physics::kBondClamp) != 0;
+            const physics::Double3 gj = clamp ? one : g[s.partner[k]];
+            const physics::Double3 v = rv[q];
+            const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+            s.kfac[k] = physics::bondSurfaceFactor(physics::Double3{v.x / l, v.y / l, v.z / l}, g[r], gj);
+        }
+    }
 }
 
 std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken) {

@@ -26,8 +26,10 @@ struct SolidSetup {
     std::vector<std::uint32_t> partner;      ///< [max_bonds * nsolid] slot-major
     std::vector<double> rest;                ///< rest lengths [m]
     std::vector<std::uint8_t> flags;         ///< physics::VcpmBondFlag
+    std::vector<double> kfac;                ///< surface correction of each slot's stiffness (empty: none)
     std::vector<std::uint16_t> body;         ///< [nsolid] material index
     std::vector<physics::VcpmMaterial> materials;
+    std::vector<double> poisson;             ///< the lattice's Poisson's ratio of each body (plane stress: nu')
     std::vector<physics::Double3> pos, vel;  ///< initial state [nsolid]
     std::vector<double> mass;                ///< [nsolid] rho_S dp^D (reports)
     /// Point loads per particle, F = load_force + load_rate t (both empty without loads).
@@ -59,6 +61,10 @@ struct SolidSetup {
 /// Builds the solids of a case (id order; bonds from gencase's CSR network). Throws
 /// seaspring::Error (file:line of the resolved case) when a solid particle's MK has no body.
 SolidSetup makeSolidSetup(const SolverCase& c);
+
+/// VcpmSurfaceCorrection: fills `kfac` (physics/vcpm_surface.h) from the bonds and the
+/// particles' initial positions.
+void surfaceCorrection(SolidSetup& s);
 
 /// Broken-bond count of every solid particle (host, from the slot states).
 std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken);

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Runs ON the GPU machine (device tool), from the repository root, with build-dev carried.
+# The VCPM surface correction (VcpmSurfaceCorrection, physics/vcpm_surface.h) against the plain
+# lattice, both on the GPU:
+#  1. the 3D cantilever of cases/cantilever3d_tipload (100 x 10 x 10 mm steel, clamped) under a
+#     gravity step of 1 m/s^2 instead of its tip load: first frequency from the free end's
+#     marker over 0.1 s against Timoshenko (converged beam elements, Cowper's shear factor), at
+#     4 and 8 particles through the thickness, nu 0.3 and 0.49;
+#  2. the hydrostatic plate (cases/hydrostatic_plate) at 4 and 8 particles through the plate:
+#     mean mid-span deflection over 0.01-0.1 s against the analytic strip 6.860e-5 m.
+# Writes $OUT/surface.txt. Usage: tools/device_surface.sh [cantilever|plate]...
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+bin="$root/build-dev/bin"
+out="${OUT:-/tmp/seaspring_out}"
+work=/tmp/seaspring_surface
+mkdir -p "$out" "$work"
+table="$out/surface.txt"
+py=/usr/bin/python3
+"$py" -c "import numpy" 2>/dev/null || py=/opt/torch/.venv/bin/python3
+nvidia-smi --query-gpu=name --format=csv,noheader | tee -a "$table"
+parts=("$@")
+[[ ${#parts[@]} -eq 0 ]] && parts=(cantilever plate)
+want() { local p; for p in "${parts[@]}"; do [[ $p == "$1" ]] && return 0; done; return 1; }
+
+if want cantilever; then
+  echo "== 3D cantilever, gravity step 1 m/s^2, first frequency (GPU)" | tee -a "$table"
+  for nu in 0.3 0.49; do
+    for sc in 0 1; do
+      sed -e '/<pointload/d' -e 's|<gravity x="0" y="0" z="0"|<gravity x="0" y="0" z="-1"|' \
+        -e "s|poissratio=\"0.3\"|poissratio=\"$nu\"|" \
+        -e 's|</vcpmsolids>|</vcpmsolids><gauges><default><computedt value="0.0001" /><output value="true" /></default><solidmarker name="Tip"><point x="0.1" y="0.005" z="0.005" /><target mkbound="1" /></solidmarker></gauges>|' \
+        -e "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+        -e 's|<parameter key="TimeMax" value="0.5"|<parameter key="TimeMax" value="0.1"|' \
+        -e 's|<parameter key="TimeOut" value="0.005"|<parameter key="TimeOut" value="0.05"|' \
+        "$root/cases/cantilever3d_tipload/CantileverTipLoad3D_Def.xml" >"$work/Cl_${nu}_$sc.xml"
+      for dp in 0.0025 0.00125; do
+        c="cl_${nu}_${sc}_$dp"
+        "$bin/gencase" "$work/Cl_${nu}_$sc.xml" "$work/$c" -dp:$dp >"$work/$c.gencase.log" 2>&1 || tail -2 "$work/$c.gencase.log"
+        start=$(date +%s)
+        "$bin/seaspring" -gpu -overwrite -sv:none -progress:0 "$work/$c" "$work/o_$c" >"$work/$c.log" 2>&1
+        wall=$(( $(date +%s) - start ))
+        "$py" - "$work/o_$c/gauges/GaugesMarker_Tip.csv" "$nu" "$dp" "$sc" "$wall" <<'EOF' | tee -a "$table"
+import sys, math, numpy as np
+f, nu, dp, sc, wall = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), sys.argv[4], sys.argv[5]
+E, rho, t, L = 2.1e9, 7800.0, 0.01, 0.1
+def timoshenko(ne=400):
+    G = E / (2 * (1 + nu)); k = 10 * (1 + nu) / (12 + 11 * nu); A, I = t * t, t ** 4 / 12
+    n = ne + 1; K = np.zeros((2 * n, 2 * n)); M = np.zeros((2 * n, 2 * n)); h = L / ne
+    for e in range(ne):
+        idx = [2 * e, 2 * e + 1, 2 * e + 2, 2 * e + 3]
+        kb = E * I / h * np.array([[0, 0, 0, 0], [0, 1, 0, -1], [0, 0, 0, 0], [0, -1, 0, 1]])
+        B = np.array([-1 / h, -0.5, 1 / h, -0.5]); ks = k * G * A * h * np.outer(B, B)
+        m = rho * A * h / 6 * np.array([[2, 0, 1, 0], [0, 0, 0, 0], [1, 0, 2, 0], [0, 0, 0, 0]]) + \
+            rho * I * h / 6 * np.array([[0, 0, 0, 0], [0, 2, 0, 1], [0, 0, 0, 0], [0, 1, 0, 2]])
+        for a in range(4):
+            for b in range(4):
+                K[idx[a], idx[b]] += kb[a, b] + ks[a, b]; M[idx[a], idx[b]] += m[a, b]
+    fr = list(range(2, 2 * n))
+    w2 = np.sort(np.real(np.linalg.eigvals(np.linalg.solve(M[np.ix_(fr, fr)], K[np.ix_(fr, fr)]))))
+    return math.sqrt(w2[0]) / (2 * math.pi)
+f_eb = 1.8751 ** 2 / (2 * math.pi) * math.sqrt(E * t ** 4 / 12 / (rho * t * t * L ** 4))
+f_t = timoshenko()
+d = np.genfromtxt(f, delimiter=';', names=True)
+tt, z = d['time'], d['dispz']
+s = z - z.mean()
+cr = [tt[i] - s[i] * (tt[i + 1] - tt[i]) / (s[i + 1] - s[i]) for i in range(len(s) - 1) if s[i] > 0 >= s[i + 1]]
+fr = (len(cr) - 1) / (cr[-1] - cr[0])
+print("  nu %.2f, %2d thick, correction %s: f %.2f Hz, Timoshenko %.2f (EB %.2f): %+.2f %%  (%s s wall)" %
+      (nu, round(t / dp), sc, fr, f_t, f_eb, 100 * (fr / f_t - 1), wall))
+EOF
+      done
+    done
+  done
+fi
+
+if want plate; then
+  echo "== hydrostatic plate, mean mid-span deflection 0.01-0.1 s / analytic 6.860e-5 m (GPU)" | tee -a "$table"
+  for sc in 0 1; do
+    sed "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+      "$root/cases/hydrostatic_plate/HydrostaticPlate_Def.xml" >"$work/Plate_$sc.xml"
+    for dp in 0.0125 0.00625; do
+      c="plate_${sc}_$dp"
+      "$bin/gencase" "$work/Plate_$sc.xml" "$work/$c" -dp:$dp >/dev/null 2>&1
+      start=$(date +%s)
+      "$bin/seaspring" -gpu -overwrite -sv:none -progress:0 -tmax:0.1 "$work/$c" "$work/o_$c" >"$work/$c.log" 2>&1
+      wall=$(( $(date +%s) - start ))
+      "$py" - "$work/o_$c/gauges/GaugesMarker_Mid.csv" "$dp" "$sc" "$wall" <<'EOF' | tee -a "$table"
+import sys, numpy as np
+d = np.genfromtxt(sys.argv[1], delimiter=';', names=True)
+m = (d['time'] >= 0.01) & (d['time'] <= 0.1)
+w = d['dispz'][m].mean()
+print("  %d particles thick, correction %s: mean %.4e m = %.4f x analytic  (%s s wall)" %
+      (round(0.05 / float(sys.argv[2])), sys.argv[3], w, w / -6.860e-5, sys.argv[4]))
+EOF
+    done
+  done
+fi
+cat "$table"
