@@ -137,6 +137,7 @@ SEASPRING_HD inline DtMaxima dtMaximaAt(std::uint32_t i, std::uint32_t nbound, c
     if (i >= nbound) {
         const Float4 a = v.acear[i];
         m.ace2 = a.x * a.x + a.y * a.y + a.z * a.z;
+        if (a.w != a.w) m.ace2 = a.w;  // a density rate that is not finite: dt NaN, a blow-up
     }
     if (i >= nbound || all_particles) m.vel2 = u.x * u.x + u.y * u.y + u.z * u.z;
     return m;

@@ -128,26 +128,33 @@ SEASPRING_HD inline float verletBoundRho(float rho, float rhom1, float ar, doubl
     return clampBoundaryDensity(float(r), rhop0);
 }
 
-/// Maxima that decide the variable time step (all exact under any reduction order).
+/// Maxima that decide the variable time step (all exact under any reduction order; a NaN
+/// anywhere makes the maximum NaN whatever the order, so a diverged force evaluation gives a
+/// non-finite dt on every backend: blow-up detection within the step, solver/blowup_check.h).
 struct DtMaxima {
     float ace2 = 0;  ///< max |a|^2 over fluid particles
     float vel2 = 0;  ///< max |v|^2 over fluid particles
     float visc = 0;  ///< max v.r/(r^2+eta2) over all pairs
 };
 
+/// The larger of a and b, NaN when either is (maxf keeps a NaN only in its first argument, which
+/// would make the result depend on the reduction order).
+SEASPRING_HD inline float maxKeepNaN(float a, float b) { return a != a ? a : (b != b ? b : maxf(a, b)); }
+
 SEASPRING_HD inline DtMaxima combineDtMaxima(const DtMaxima& a, const DtMaxima& b) {
-    return {maxf(a.ace2, b.ace2), maxf(a.vel2, b.vel2), maxf(a.visc, b.visc)};
+    return {maxKeepNaN(a.ace2, b.ace2), maxKeepNaN(a.vel2, b.vel2), maxKeepNaN(a.visc, b.visc)};
 }
 
 /// Host only. dt = CFL min( sqrt(h/|a|max), h / (max(c0, 10 |v|max) + h viscmax) ) (host, double; sqrt
-/// is correctly rounded everywhere). Returns +inf parts as needed when maxima are zero.
+/// is correctly rounded everywhere). Returns +inf parts as needed when maxima are zero; a NaN
+/// maximum gives a NaN dt (the step then stops as a blow-up).
 inline double variableDt(const DtMaxima& m, double h, double cs0, double cfl) {
     const double acemax = std::sqrt(double(m.ace2));
     const double velmax = std::sqrt(double(m.vel2));
-    const double dt1 = acemax > 0 ? std::sqrt(h / acemax) : 1e300;
+    const double dt1 = acemax > 0 ? std::sqrt(h / acemax) : (acemax == 0 ? 1e300 : acemax);  // NaN stays NaN
     const double cv = cs0 > 10.0 * velmax ? cs0 : 10.0 * velmax;
     const double dt2 = h / (cv + h * double(m.visc));
-    return cfl * (dt1 < dt2 ? dt1 : dt2);
+    return cfl * (dt1 < dt2 || dt1 != dt1 ? dt1 : dt2);  // a NaN in either stays NaN
 }
 
 /// Host only. The smallest dt a step may take (DualSPHysics' DtMin): `dt_min` when set (> 0),

@@ -14,6 +14,7 @@
 #include "physics/eos_tait.h"
 #include "physics/fluid_constants.h"
 #include "physics/fluid_pair_terms.h"
+#include "physics/time_integration.h"
 #include "physics/sph_kernels.h"
 #include "physics/viscosity.h"
 
@@ -254,4 +255,33 @@ TEST(PairAcceleration, FromMinusZeroEqualsThePlainProducts) {
     checkAccelerationFromMinusZero<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::None, 3>>();
     checkAccelerationFromMinusZero<FluidOptions<WendlandKernel, Viscosity::Laminar, DensityDiffusion::None, 3>>();
     checkAccelerationFromMinusZero<FluidOptions<CubicKernel, Viscosity::LaminarSps, DensityDiffusion::None, 2>>();
+}
+
+// The dt maxima keep a NaN whatever the order they are combined in (the GPU reduction's shape
+// differs from the CPU's): a diverged force evaluation gives a non-finite dt on every backend,
+// which stops the run within the step. Broken on purpose (the plain maxf, which drops a NaN in
+// its second argument): fails.
+TEST(DtMaxima, ANanWinsInEitherOrder) {
+    const float nan = std::nanf("");
+    seaspring::physics::DtMaxima a, b;
+    a.ace2 = 4.f;
+    a.vel2 = 1.f;
+    a.visc = 2.f;
+    b.ace2 = nan;
+    b.vel2 = 3.f;
+    b.visc = nan;
+    const seaspring::physics::DtMaxima ab = seaspring::physics::combineDtMaxima(a, b);
+    const seaspring::physics::DtMaxima ba = seaspring::physics::combineDtMaxima(b, a);
+    EXPECT_TRUE(std::isnan(ab.ace2));
+    EXPECT_TRUE(std::isnan(ba.ace2));
+    EXPECT_TRUE(std::isnan(ab.visc));
+    EXPECT_TRUE(std::isnan(ba.visc));
+    EXPECT_EQ(ab.vel2, 3.f);
+    EXPECT_EQ(ba.vel2, 3.f);
+    EXPECT_FALSE(std::isfinite(seaspring::physics::variableDt(ab, 0.01, 20, 0.2)));
+    EXPECT_FALSE(std::isfinite(seaspring::physics::variableDt(ba, 0.01, 20, 0.2)));
+    // A NaN acceleration alone (a density rate that is not finite counts as one: dtMaximaAt).
+    b.visc = 1.f;
+    EXPECT_FALSE(std::isfinite(seaspring::physics::variableDt(seaspring::physics::combineDtMaxima(a, b), 0.01, 20, 0.2)));
+    EXPECT_FALSE(std::isfinite(seaspring::physics::variableDt(seaspring::physics::combineDtMaxima(b, a), 0.01, 20, 0.2)));
 }
