@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "core/host_device.h"
+#include "physics/sph_types.h"
 
 namespace seaspring::physics {
 
@@ -34,6 +35,9 @@ constexpr long long kMaxDtMinStreak = 1000;
 /// The stretch |l - l0| of a bond past kMaxBondStrain l0 (NaN included); no division, so the
 /// sub-step can test every bond it visits.
 SEASPRING_HD inline bool bondPastBound(double len, double rest) { return !(fabs(len - rest) <= kMaxBondStrain * rest); }
+
+/// The speed |v| of a solid particle [m/s].
+SEASPRING_HD inline double speedOf(const Double3& v) { return sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
 /// A speed |v|^2 past bound^2 (NaN included).
 SEASPRING_HD inline bool speedPastBound(double vx, double vy, double vz, double bound) {

@@ -382,7 +382,7 @@ SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st,
     if (notFinite(v.x) || notFinite(v.y) || notFinite(v.z))
         raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, v.x + v.y + v.z, t);
     else if (speedPastBound(v.x, v.y, v.z, st.material[st.body[s]].max_speed))
-        raiseSolidAlarm(st.alarm, s, kSolidAlarmSpeed, sqrt(v.x * v.x + v.y * v.y + v.z * v.z), t);
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmSpeed, speedOf(v), t);
     if (st.contact_force) {  // the ledger: impulse F dt and work F . (r^{m+1} - r^m) of the contact force
         const Double3 fc = st.contact_force[s], j = st.contact_impulse[s];
         st.contact_impulse[s] = Double3{j.x + fc.x * dt, j.y + fc.y * dt, j.z + fc.z * dt};

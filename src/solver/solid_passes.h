@@ -141,14 +141,12 @@ struct SolidAlarmPass {
 /// The speed of solid particle s (reduced with MaxCombine: a maximum is exact in any order).
 struct SolidSpeedPass {
     const physics::Double3* vel;
-    SEASPRING_HD double operator()(std::uint32_t s) const {
-        const physics::Double3 v = vel[s];
-        return sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-    }
+    SEASPRING_HD double operator()(std::uint32_t s) const { return physics::speedOf(vel[s]); }
 };
 
+/// The larger, NaN when either is (so the result does not depend on the reduction's order).
 struct MaxCombine {
-    SEASPRING_HD double operator()(double a, double b) const { return a > b ? a : b; }
+    SEASPRING_HD double operator()(double a, double b) const { return a != a ? a : (b != b ? b : (a > b ? a : b)); }
 };
 
 struct CountCombine {
