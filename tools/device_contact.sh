@@ -12,19 +12,11 @@
 #     binaries (build-dev/base, carried as base.tar.xz), back to back.
 # Writes $OUT/contact.txt (the table) and logs. Usage: tools/device_contact.sh [parity|liao|pmma|cost]...
 set -uo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-bin="$root/build-dev/bin"
-out="${OUT:-/tmp/seaspring_out}"
-work=/tmp/seaspring_dev_contact
-mkdir -p "$out" "$work"
-table="$out/contact.txt"
-py=/usr/bin/python3
-"$py" -c "import numpy, h5py" 2>/dev/null || py=/opt/torch/.venv/bin/python3
-nvidia-smi --query-gpu=name --format=csv,noheader | tee -a "$table"
 parts=("$@")
 [[ ${#parts[@]} -eq 0 ]] && parts=(parity liao pmma cost)
-want() { local p; for p in "${parts[@]}"; do [[ $p == "$1" ]] && return 0; done; return 1; }
+WORK_NAME=seaspring_dev_contact TABLE_NAME=contact.txt
+# shellcheck source=tools/device_env.sh
+source "$(dirname "${BASH_SOURCE[0]}")/device_env.sh"
 with_contact() {  # definition in, definition out: VcpmContact 1 (and friction) added
   sed 's|<parameters>|<parameters><parameter key="VcpmContact" value="1" /><parameter key="VcpmContactFriction" value="0.3" />|' "$1" >"$2"
 }

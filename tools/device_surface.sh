@@ -10,19 +10,11 @@
 #     mean mid-span deflection over 0.01-0.1 s against the analytic strip 6.860e-5 m.
 # Writes $OUT/surface.txt. Usage: tools/device_surface.sh [cantilever|plate]...
 set -uo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-bin="$root/build-dev/bin"
-out="${OUT:-/tmp/seaspring_out}"
-work=/tmp/seaspring_surface
-mkdir -p "$out" "$work"
-table="$out/surface.txt"
-py=/usr/bin/python3
-"$py" -c "import numpy" 2>/dev/null || py=/opt/torch/.venv/bin/python3
-nvidia-smi --query-gpu=name --format=csv,noheader | tee -a "$table"
 parts=("$@")
 [[ ${#parts[@]} -eq 0 ]] && parts=(cantilever plate)
-want() { local p; for p in "${parts[@]}"; do [[ $p == "$1" ]] && return 0; done; return 1; }
+WORK_NAME=seaspring_surface TABLE_NAME=surface.txt
+# shellcheck source=tools/device_env.sh
+source "$(dirname "${BASH_SOURCE[0]}")/device_env.sh"
 
 if want cantilever; then
   echo "== 3D cantilever, gravity step 1 m/s^2, first frequency (GPU)" | tee -a "$table"

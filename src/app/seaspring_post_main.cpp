@@ -71,6 +71,13 @@ std::vector<int> parseIntList(const std::string& text, const std::string& option
     return v;
 }
 
+/// The options every subcommand reads its part files with: --dirin (required), --first, --last.
+void addPartRange(CLI::App* sub, std::string& dirin, int& first, int& last) {
+    sub->add_option("--dirin", dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
+    sub->add_option("--first", first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
+    sub->add_option("--last", last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,10 +92,8 @@ int main(int argc, char** argv) {
         "measure",
         "the in-run gauges' kernel sums (Shepard-corrected) at the points of a points file, for every part "
         "file: one CSV row per part (MeasureTool)");
-    measure->add_option("--dirin", mo.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
+    addPartRange(measure, mo.dirin, mo.first, mo.last);
     measure->add_option("--points", mo.points, "points file: POINTS then x y z lines, or POINTSLIST")->required();
-    measure->add_option("--first", mo.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
-    measure->add_option("--last", mo.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
     measure->add_option("--vars", vars, "press, vel, rhop, wsum, height or all, comma-separated (default press)");
     std::vector<double> height;
     CLI::Option* height_opt =
@@ -113,10 +118,8 @@ int main(int argc, char** argv) {
         "forces",
         "the fluid's force on boundary or solid MKs (the in-run force gauge's function), one CSV row per part "
         "file (ComputeForces)");
-    forces->add_option("--dirin", fo.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
+    addPartRange(forces, fo.dirin, fo.first, fo.last);
     forces->add_option("--filexml", fo.filexml, "the resolved case the run read (NAME.xml written by gencase)")->required();
-    forces->add_option("--first", fo.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
-    forces->add_option("--last", fo.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
     CLI::Option* omk = forces->add_option("--onlymk", onlymk, "absolute MKs (mkbound + mkboundfirst), e.g. 21 or 11,21-23");
     forces->add_option("--mkbound", mkbound, "or local mkbound numbers, e.g. 10")->excludes(omk);
     forces->add_option("--celldiv", fo.cell_div, "cells of 2h/N as the run's -cellmode (1..4; default: as -cellmode:auto)")
@@ -130,9 +133,7 @@ int main(int argc, char** argv) {
     CLI::App* flow = app.add_subcommand(
         "flow", "fluid mass and volume crossing a plane section between consecutive part files, one CSV row per "
                 "part file after the first (FlowTool)");
-    flow->add_option("--dirin", wo.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
-    flow->add_option("--first", wo.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
-    flow->add_option("--last", wo.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
+    addPartRange(flow, wo.dirin, wo.first, wo.last);
     flow->add_option("--plane", wo.plane, "x,y,z,nx,ny,nz: a point of the plane and its normal (the positive direction)")
         ->required()
         ->expected(1, 6)
@@ -147,9 +148,7 @@ int main(int argc, char** argv) {
     CLI::App* iso = app.add_subcommand(
         "isosurface", "the free surface of every part file: the gauges' kernel sums on a grid (PREFIX_NNNN.vti), "
                       "contoured by VTK under pvpython into VTK polydata (PREFIX_NNNN.vtp) (IsoSurface)");
-    iso->add_option("--dirin", io.dirin, "the run's OUTDIR (reads OUTDIR/data/part_NNNN.h5)")->required();
-    iso->add_option("--first", io.first, "first part number (default: the first file)")->check(CLI::NonNegativeNumber);
-    iso->add_option("--last", io.last, "last part number (default: the last file)")->check(CLI::NonNegativeNumber);
+    addPartRange(iso, io.dirin, io.first, io.last);
     iso->add_option("--var", io.var, "the field contoured: mass (sum V W m, default) or wsum (sum V W)");
     iso->add_option("--level", io.level, "contour value (default: 0.5 m_fluid in 3D, 0.4 m_fluid in 2D; 0.5 for wsum)")
         ->check(CLI::NonNegativeNumber);

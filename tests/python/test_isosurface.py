@@ -21,7 +21,7 @@ import unittest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 
-from validation.paraview import pvpython_command  # noqa: E402
+from validation.paraview import pvpython_command, run_pvpython, seaspring_binaries  # noqa: E402
 
 TANK3D = """<?xml version="1.0" encoding="UTF-8" ?>
 <case><casedef><constantsdef><gravity x="0" y="0" z="-9.81" /><rhop0 value="1000" /><hswl value="0" auto="true" />
@@ -62,11 +62,9 @@ class IsosurfaceOpensInParaView(unittest.TestCase):
         cls.prefix, why = pvpython_command()
         if cls.prefix is None:
             raise unittest.SkipTest(why)
-        bindir = os.environ.get("SEASPRING_BIN", os.path.join(ROOT, "build", "bin"))
-        cls.gencase, cls.seaspring = (os.path.join(bindir, b) for b in ("gencase", "seaspring"))
-        cls.post = os.environ.get("SEASPRING_POST") or os.path.join(bindir, "seaspring-post")
-        if not all(os.access(b, os.X_OK) for b in (cls.gencase, cls.seaspring, cls.post)):
-            raise unittest.SkipTest(f"no gencase/seaspring/seaspring-post in {bindir} (set SEASPRING_BIN)")
+        cls.gencase, cls.seaspring, cls.post, why = seaspring_binaries()
+        if why:
+            raise unittest.SkipTest(why)
         cls.tmp = tempfile.mkdtemp(prefix="seaspring_iso_")
 
     @classmethod
@@ -91,11 +89,8 @@ class IsosurfaceOpensInParaView(unittest.TestCase):
         script = os.path.join(self.tmp, "open.py")
         with open(script, "w", encoding="utf-8") as f:
             f.write(OPEN_SCRIPT)
-        for _ in range(3):      # xvfb-run -a can race with another X server starting
-            p = subprocess.run(self.prefix + [script] + paths, capture_output=True, text=True, timeout=300)
-            out = p.stdout + p.stderr
-            if p.returncode == 0 or "bad X server connection" not in out:
-                break
+        p = run_pvpython(self.prefix + [script] + paths)
+        out = p.stdout + p.stderr
         self.assertEqual(p.returncode, 0, out[-4000:])
         res = {}
         for line in p.stdout.splitlines():

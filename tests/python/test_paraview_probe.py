@@ -33,7 +33,7 @@ import unittest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 
-from validation.paraview import pvpython_command  # noqa: E402
+from validation.paraview import pvpython_command, run_pvpython, run_still_tank, seaspring_binaries  # noqa: E402
 
 # x, y, z [m]: water 0.4 m wide and 0.2 m deep, h = 0.0141 (2h = 0.028); pressures 760-1430 Pa.
 POINTS = [(0.10, 0.0, 0.05), (0.20, 0.0, 0.05), (0.30, 0.0, 0.08), (0.20, 0.0, 0.12)]
@@ -88,18 +88,12 @@ class ParaViewProbeAgreesWithMeasure(unittest.TestCase):
         prefix, why = pvpython_command()
         if prefix is None:
             self.skipTest(why)
-        bindir = os.environ.get("SEASPRING_BIN", os.path.join(ROOT, "build", "bin"))
-        gencase, seaspring = (os.path.join(bindir, b) for b in ("gencase", "seaspring"))
-        post = os.environ.get("SEASPRING_POST") or os.path.join(bindir, "seaspring-post")
-        if not all(os.access(b, os.X_OK) for b in (gencase, seaspring, post)):
-            self.skipTest(f"no gencase/seaspring/seaspring-post in {bindir} (set SEASPRING_BIN)")
+        gencase, seaspring, post, why = seaspring_binaries()
+        if why:
+            self.skipTest(why)
         tmp = tempfile.mkdtemp(prefix="seaspring_pvprobe_")
         try:
-            xml = os.path.join(ROOT, "tests", "data", "gauges", "StillTank_Def.xml")
-            case, run = os.path.join(tmp, "StillTank"), os.path.join(tmp, "run")
-            subprocess.run([gencase, xml, case], check=True, stdout=subprocess.DEVNULL, timeout=120)
-            subprocess.run([seaspring, "-cpu", "-threads:2", "-tmax:0.2", "-tout:0.1", "-quiet", case, run],
-                           check=True, stdout=subprocess.DEVNULL, timeout=300)
+            run = run_still_tank(gencase, seaspring, tmp)
             points = os.path.join(tmp, "points.txt")
             with open(points, "w", encoding="utf-8") as f:
                 f.write("POINTS\n" + "".join(f"{x:g} {y:g} {z:g}\n" for x, y, z in POINTS))
@@ -115,11 +109,8 @@ class ParaViewProbeAgreesWithMeasure(unittest.TestCase):
             with open(script, "w", encoding="utf-8") as f:
                 f.write(PROBE_SCRIPT)
             cmd = prefix + [script, run, points, repr(h), str(dim)]
-            for _ in range(3):      # xvfb-run -a can race with another X server starting
-                p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-                out = p.stdout + p.stderr
-                if p.returncode == 0 or "bad X server connection" not in out:
-                    break
+            p = run_pvpython(cmd)
+            out = p.stdout + p.stderr
             self.assertEqual(p.returncode, 0, out[-4000:])
             probes = {}
             for line in p.stdout.splitlines():

@@ -20,7 +20,7 @@ import unittest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 
-from validation.paraview import pvpython_command  # noqa: E402
+from validation.paraview import pvpython_command, run_pvpython, run_still_tank, seaspring_binaries  # noqa: E402
 
 TOLERANCE = 0.02
 
@@ -30,26 +30,17 @@ class ParaViewStateAgreesWithMeasure(unittest.TestCase):
         prefix, why = pvpython_command()
         if prefix is None:
             self.skipTest(why)
-        bindir = os.environ.get("SEASPRING_BIN", os.path.join(ROOT, "build", "bin"))
-        gencase, seaspring = (os.path.join(bindir, b) for b in ("gencase", "seaspring"))
-        post = os.environ.get("SEASPRING_POST") or os.path.join(bindir, "seaspring-post")
-        if not all(os.access(b, os.X_OK) for b in (gencase, seaspring, post)):
-            self.skipTest(f"no gencase/seaspring/seaspring-post in {bindir} (set SEASPRING_BIN)")
+        gencase, seaspring, post, why = seaspring_binaries()
+        if why:
+            self.skipTest(why)
         tmp = tempfile.mkdtemp(prefix="seaspring_pvstate_")
         try:
-            xml = os.path.join(ROOT, "tests", "data", "gauges", "StillTank_Def.xml")
-            case, run = os.path.join(tmp, "StillTank"), os.path.join(tmp, "run")
-            subprocess.run([gencase, xml, case], check=True, stdout=subprocess.DEVNULL, timeout=120)
-            subprocess.run([seaspring, "-cpu", "-threads:2", "-tmax:0.2", "-tout:0.1", "-quiet", case, run],
-                           check=True, stdout=subprocess.DEVNULL, timeout=300)
+            run = run_still_tank(gencase, seaspring, tmp)
             line, png = os.path.join(tmp, "line.csv"), os.path.join(tmp, "slice.png")
             cmd = prefix + [os.path.join(ROOT, "tools", "paraview_sph_state.py"), os.path.join(run, "parts.xdmf"),
                             "--csv", line, "--png", png]
-            for _ in range(3):      # xvfb-run -a can race with another X server starting
-                p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-                out = p.stdout + p.stderr
-                if p.returncode == 0 or "bad X server connection" not in out:
-                    break
+            p = run_pvpython(cmd)
+            out = p.stdout + p.stderr
             self.assertEqual(p.returncode, 0, out[-4000:])
             self.assertGreater(os.path.getsize(png), 5000)
             with open(line, encoding="utf-8") as f:

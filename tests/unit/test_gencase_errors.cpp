@@ -21,14 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Floor (mkbound 0): z = -0.2, x and y in 0..0.4. Water (mkfluid 0): x, y, z in 0..0.4.
-// All bounds are multiples of 0.2, so the same geometry also works at dp = 0.2.
-// dp 0.1: floor 5*5 = 25, water 5*5*5 = 125 -> 150. dp 0.2: floor 3*3 = 9, water 3*3*3 = 27 -> 36.
-const char* kPool =
-    "<setmkbound mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"-0.2\"/>"
-    "<size x=\"0.4\" y=\"0.4\" z=\"0\"/></drawbox>\n"
-    "<setmkfluid mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"0\"/>"
-    "<size x=\"0.4\" y=\"0.4\" z=\"0.4\"/></drawbox>";
+using test::kPool;  // gencase_test_util.h
 
 struct CliRun {
     std::string dir;   ///< scratch directory holding the case

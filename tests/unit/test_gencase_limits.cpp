@@ -21,12 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A floor and a block of water (as test_gencase_errors.cpp's pool).
-const char* kPool =
-    "<setmkbound mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"-0.2\"/>"
-    "<size x=\"0.4\" y=\"0.4\" z=\"0\"/></drawbox>\n"
-    "<setmkfluid mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"0\"/>"
-    "<size x=\"0.4\" y=\"0.4\" z=\"0.4\"/></drawbox>";
+using test::kPool;  // gencase_test_util.h
 
 /// The message of what gencase stops with before writing (build(), then checkForSolver(),
 /// as gencase_main does); "" when the case passes.

@@ -21,6 +21,7 @@
 
 #include "core/error.h"
 #include "error_expect.h"
+#include "part_particles.h"
 #include "io/h5_util.h"
 #include "io/part_output.h"
 #include "io/xdmf_series.h"
@@ -58,34 +59,7 @@ struct Scratch {
     }
 };
 
-/// Particle arrays that own the memory a PartFrame points into.
-struct Particles {
-    std::vector<double> pos;
-    std::vector<float> vel, rhop, press, mass;
-    std::vector<std::uint32_t> id;
-    std::vector<std::uint8_t> type, excluded;
-    std::vector<std::uint16_t> mk;
-    PartConstants constants;
-
-    PartFrame frame(int index, double time, long long step) const {
-        PartFrame f;
-        f.index = index;
-        f.time = time;
-        f.step = step;
-        f.np = id.size();
-        f.pos = pos.data();
-        f.vel = vel.data();
-        f.rhop = rhop.data();
-        f.press = press.data();
-        f.id = id.data();
-        f.type = type.data();
-        f.mk = mk.data();
-        f.excluded = excluded.data();
-        f.mass = mass.data();
-        f.constants = constants;
-        return f;
-    }
-};
+using Particles = test::PartParticles;
 
 /// Five particles whose values include bit patterns a converting writer would change:
 /// -0, a NaN with a payload, infinities, subnormals and extremes.

@@ -26,6 +26,7 @@
 #include "../unit/error_expect.h"
 #include "core/particle_set.h"
 #include "io/part_output.h"
+#include "part_particles.h"
 #include "physics/gauges.h"
 #include "post/flow.h"
 #include "post/part_series.h"
@@ -50,42 +51,17 @@ std::string writeUniformFlow(const std::string& tag, int nparts, float rhop_late
     const std::string out = scratch(tag);
     const double dp = 0.1, U = 0.5, dt = 0.2;
     for (int k = 0; k < nparts; ++k) {
-        std::vector<double> pos;
-        std::vector<float> vel, rhop, press, mass;
-        std::vector<std::uint32_t> id;
-        std::vector<std::uint8_t> type, excl;
-        std::vector<std::uint16_t> mk;
+        test::PartParticles p;
         auto add = [&](double x, double y, double z, ParticleType t, std::uint8_t ex) {
-            id.push_back(std::uint32_t(id.size()));
-            pos.insert(pos.end(), {x, y, z});
-            vel.insert(vel.end(), {float(U), 0.f, 0.f});
-            rhop.push_back(k == 0 ? 1000.f : rhop_later);
-            press.push_back(0.f);
-            mass.push_back(1.f);
-            type.push_back(std::uint8_t(t));
-            excl.push_back(ex);
-            mk.push_back(t == ParticleType::Fluid ? 1 : 11);
+            p.add(x, y, z, float(U), 0.f, 0.f, k == 0 ? 1000.f : rhop_later, 1.f, t, t == ParticleType::Fluid ? 1 : 11, ex);
         };
         for (int b = 0; b < 2; ++b) add(0.45 + U * dt * k, 0.1 * b, -0.1, ParticleType::Fixed, 0);
         for (int z = 0; z < 3; ++z)
             for (int y = 0; y < 5; ++y)
                 for (int x = 0; x < 10; ++x) add(x * dp + U * dt * k, y * dp, z * dp, ParticleType::Fluid, 0);
         add(0.35 + U * dt * k, 0.2, 0.1, ParticleType::Fluid, k >= 2 ? 1 : 0);
-        io::PartFrame f;
-        f.index = k;
-        f.time = dt * k;
-        f.np = id.size();
-        f.pos = pos.data();
-        f.vel = vel.data();
-        f.rhop = rhop.data();
-        f.press = press.data();
-        f.id = id.data();
-        f.type = type.data();
-        f.mk = mk.data();
-        f.excluded = excl.data();
-        f.mass = mass.data();
-        f.constants = {0.17, dp, "Wendland C2", 1000.0, 3, 1e5};
-        io::writePartH5(out, f);
+        p.constants = {0.17, dp, "Wendland C2", 1000.0, 3, 1e5};
+        io::writePartH5(out, p.frame(k, dt * k, 0));
     }
     return out;
 }

@@ -25,6 +25,7 @@
 #include "../unit/error_expect.h"
 #include "core/particle_set.h"
 #include "io/part_output.h"
+#include "part_particles.h"
 #include "post/isosurface.h"
 
 using namespace seaspring;
@@ -43,37 +44,13 @@ std::string scratch(const std::string& tag) {
 /// rho 1000, m = rho dp^3 = 8e-3 kg, Wendland C2, 3D, no walls. One part file: OUTDIR.
 std::string writeBlock(const std::string& tag) {
     const std::string out = scratch(tag);
-    std::vector<double> pos;
-    std::vector<float> vel, rhop, press, mass;
-    std::vector<std::uint32_t> id;
-    std::vector<std::uint8_t> type, excl;
-    std::vector<std::uint16_t> mk;
+    test::PartParticles p;
     for (int z = 0; z <= 5; ++z)
         for (int y = 0; y <= 10; ++y)
-            for (int x = 0; x <= 15; ++x) {
-                id.push_back(std::uint32_t(id.size()));
-                pos.insert(pos.end(), {x * kDp, y * kDp, z * kDp});
-                vel.insert(vel.end(), {0.f, 0.f, 0.f});
-                rhop.push_back(1000.f);
-                press.push_back(0.f);
-                mass.push_back(float(1000 * kDp * kDp * kDp));
-                type.push_back(std::uint8_t(ParticleType::Fluid));
-                excl.push_back(0);
-                mk.push_back(1);
-            }
-    io::PartFrame f;
-    f.np = id.size();
-    f.pos = pos.data();
-    f.vel = vel.data();
-    f.rhop = rhop.data();
-    f.press = press.data();
-    f.id = id.data();
-    f.type = type.data();
-    f.mk = mk.data();
-    f.excluded = excl.data();
-    f.mass = mass.data();
-    f.constants = {kH, kDp, "Wendland C2", 1000.0, 3, 1.6e5};
-    io::writePartH5(out, f);
+            for (int x = 0; x <= 15; ++x)
+                p.add(x * kDp, y * kDp, z * kDp, 0.f, 0.f, 0.f, 1000.f, float(1000 * kDp * kDp * kDp), ParticleType::Fluid, 1);
+    p.constants = {kH, kDp, "Wendland C2", 1000.0, 3, 1.6e5};
+    io::writePartH5(out, p.frame(0, 0.0, 0));
     return out;
 }
 

@@ -22,13 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Floor (mkbound 0): z = -0.2, x and y in 0..0.4 -> 25 particles. Water (mkfluid 0): x, y, z
-// in 0..0.4 -> 125 particles (dp 0.1).
-const char* kPool =
-    "<setmkbound mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"-0.2\"/>"
-    "<size x=\"0.4\" y=\"0.4\" z=\"0\"/></drawbox>\n"
-    "<setmkfluid mk=\"0\"/><drawbox><boxfill>solid</boxfill><point x=\"0\" y=\"0\" z=\"0\"/>"
-    "<size x=\"0.4\" y=\"0.4\" z=\"0.4\"/></drawbox>";
+using test::kPool;  // gencase_test_util.h
 
 // The pool plus a moving wall (mkbound 1, x = -0.1: 25), a VCPM beam (mkbound 2: 3*2*2 = 12)
 // clamped to a block (mkbound 3: 2*2*2 = 8).

@@ -20,6 +20,38 @@ def pvpython_command():
     return [pv], ""
 
 
+def run_pvpython(cmd, timeout=300):
+    """Runs a pvpython command (output captured as text), again up to twice when xvfb-run -a
+    lost the race for an X server to another one starting on this machine."""
+    for _ in range(3):
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+        if p.returncode == 0 or "bad X server connection" not in p.stdout + p.stderr:
+            break
+    return p
+
+
+def seaspring_binaries():
+    """(gencase, seaspring, seaspring-post, None), or (None, None, None, why) when one is missing:
+    SEASPRING_BIN names their folder (default build/bin), SEASPRING_POST seaspring-post."""
+    bindir = os.environ.get("SEASPRING_BIN", os.path.join(ROOT, "build", "bin"))
+    gencase, seaspring = (os.path.join(bindir, b) for b in ("gencase", "seaspring"))
+    post = os.environ.get("SEASPRING_POST") or os.path.join(bindir, "seaspring-post")
+    if not all(os.access(b, os.X_OK) for b in (gencase, seaspring, post)):
+        return None, None, None, f"no gencase/seaspring/seaspring-post in {bindir} (set SEASPRING_BIN)"
+    return gencase, seaspring, post, None
+
+
+def run_still_tank(gencase, seaspring, tmp):
+    """The 2D still tank of tests/data/gauges run for 0.2 s on 2 CPU threads into TMP/run (part
+    files at 0, 0.1 and 0.2 s); returns the run folder."""
+    xml = os.path.join(ROOT, "tests", "data", "gauges", "StillTank_Def.xml")
+    case, run = os.path.join(tmp, "StillTank"), os.path.join(tmp, "run")
+    subprocess.run([gencase, xml, case], check=True, stdout=subprocess.DEVNULL, timeout=120)
+    subprocess.run([seaspring, "-cpu", "-threads:2", "-tmax:0.2", "-tout:0.1", "-quiet", case, run],
+                   check=True, stdout=subprocess.DEVNULL, timeout=300)
+    return run
+
+
 def render(rundir, png, title, time=None, timeout=600):
     """Checks RUNDIR's parts.xdmf and vtk/*.vtu with ParaView and renders PNG. Returns
     (ok, message)."""

@@ -1,0 +1,16 @@
+# Sourced by the device scripts (tools/device_contact.sh, tools/device_surface.sh) that run ON
+# the GPU machine with build-dev carried: sets root, bin, out, work (from WORK_NAME), table
+# (from TABLE_NAME), py (a Python with numpy and h5py), the library path, prints the GPU
+# into the table, and `want PART` (true when PART is among the script's arguments, or when
+# there are none and PART is in DEFAULT_PARTS).
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export LD_LIBRARY_PATH="$root/build-dev/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+bin="$root/build-dev/bin"
+out="${OUT:-/tmp/seaspring_out}"
+work="/tmp/$WORK_NAME"
+mkdir -p "$out" "$work"
+table="$out/$TABLE_NAME"
+py=/usr/bin/python3
+"$py" -c "import numpy, h5py" 2>/dev/null || py=/opt/torch/.venv/bin/python3
+nvidia-smi --query-gpu=name --format=csv,noheader | tee -a "$table"
+want() { local p; for p in "${parts[@]}"; do [[ $p == "$1" ]] && return 0; done; return 1; }
