@@ -20,19 +20,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/device_env.sh"
 with_contact() {  # definition in, definition out: VcpmContact 1 (and friction) added
   sed 's|<parameters>|<parameters><parameter key="VcpmContact" value="1" /><parameter key="VcpmContactFriction" value="0.3" />|' "$1" >"$2"
 }
-parity() {  # name case nsteps extra...
-  local name=$1 kase=$2 n=$3; shift 3
-  local h=()
-  for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
-    local log="$work/$name.${b//[ :]/_}.log"
-    "$bin/seaspring" $b -overwrite -nsteps:"$n" -sv:none -progress:0 "$@" "$kase" "$work/o_$name" >"$log" 2>&1 ||
-      { echo "FAILED $name $b"; tail -3 "$log"; }
-    h+=("$(grep -o 'State hash: [0-9a-f]*' "$log" | cut -d' ' -f3)")
-  done
-  local same=yes
-  for x in "${h[@]}"; do [[ "$x" == "${h[0]}" ]] || same=NO; done
-  printf '%-24s cpu1=%s cpu2=%s cpu16=%s gpu=%s identical=%s\n' "$name" "${h[@]}" "$same" | tee -a "$table"
-}
 
 if want parity; then
   echo "== parity (contact on; the freezing beam)" | tee -a "$table"

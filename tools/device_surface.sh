@@ -6,15 +6,29 @@
 #     gravity step of 1 m/s^2 instead of its tip load: first frequency from the free end's
 #     marker over 0.1 s against Timoshenko (converged beam elements, Cowper's shear factor), at
 #     4 and 8 particles through the thickness, nu 0.3 and 0.49;
+#  0. parity: state hashes on 1, 2 and 16 CPU threads and the GPU with the correction on;
 #  2. the hydrostatic plate (cases/hydrostatic_plate) at 4 and 8 particles through the plate:
 #     mean mid-span deflection over 0.01-0.1 s against the analytic strip 6.860e-5 m.
 # Writes $OUT/surface.txt. Usage: tools/device_surface.sh [cantilever|plate]...
 set -uo pipefail
 parts=("$@")
-[[ ${#parts[@]} -eq 0 ]] && parts=(cantilever plate)
+[[ ${#parts[@]} -eq 0 ]] && parts=(parity cantilever plate)
 WORK_NAME=seaspring_surface TABLE_NAME=surface.txt
 # shellcheck source=tools/device_env.sh
 source "$(dirname "${BASH_SOURCE[0]}")/device_env.sh"
+
+if want parity; then
+  echo "== parity with the surface correction (CPU 1, 2, 16 threads, GPU)" | tee -a "$table"
+  sed -e '/<pointload/d' -e 's|<gravity x="0" y="0" z="0"|<gravity x="0" y="0" z="-1"|' \
+    -e 's|<parameters>|<parameters><parameter key="VcpmSurfaceCorrection" value="1" />|' \
+    "$root/cases/cantilever3d_tipload/CantileverTipLoad3D_Def.xml" >"$work/ClPar_Def.xml"
+  "$bin/gencase" "$work/ClPar_Def.xml" "$work/clpar" -dp:0.0025 >/dev/null
+  parity cantilever3d_surface "$work/clpar" 3000
+  sed 's|<parameters>|<parameters><parameter key="VcpmSurfaceCorrection" value="1" />|' \
+    "$root/cases/hydrostatic_plate/HydrostaticPlate_Def.xml" >"$work/PlatePar_Def.xml"
+  "$bin/gencase" "$work/PlatePar_Def.xml" "$work/platepar" -dp:0.025 >/dev/null
+  parity plate2d_surface "$work/platepar" 400
+fi
 
 if want cantilever; then
   echo "== 3D cantilever, gravity step 1 m/s^2, first frequency (GPU)" | tee -a "$table"
