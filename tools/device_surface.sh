@@ -8,11 +8,13 @@
 #     4 and 8 particles through the thickness, nu 0.3 and 0.49;
 #  0. parity: state hashes on 1, 2 and 16 CPU threads and the GPU with the correction on;
 #  2. the hydrostatic plate (cases/hydrostatic_plate) at 4 and 8 particles through the plate:
-#     mean mid-span deflection over 0.01-0.1 s against the analytic strip 6.860e-5 m.
-# Writes $OUT/surface.txt. Usage: tools/device_surface.sh [cantilever|plate]...
+#     mean mid-span deflection over 0.01-0.1 s against the analytic strip 6.860e-5 m;
+#  3. liao: DualSPHysics' FlexStruc Liao 2D case as shipped (shared/dualsphysics-cases), plate
+#     top's horizontal displacement (tools/solid_marker.py; series in $OUT/liao2d_top_sc*.csv).
+# Writes $OUT/surface.txt. Usage: tools/device_surface.sh [parity|cantilever|plate|liao]...
 set -uo pipefail
 parts=("$@")
-[[ ${#parts[@]} -eq 0 ]] && parts=(parity cantilever plate)
+[[ ${#parts[@]} -eq 0 ]] && parts=(parity cantilever plate liao)
 WORK_NAME=seaspring_surface TABLE_NAME=surface.txt
 # shellcheck source=tools/device_env.sh
 source "$(dirname "${BASH_SOURCE[0]}")/device_env.sh"
@@ -101,6 +103,28 @@ print("  %d particles thick, correction %s: mean %.4e m = %.4f x analytic  (%s s
       (round(0.05 / float(sys.argv[2])), sys.argv[3], w, w / -6.860e-5, sys.argv[4]))
 EOF
     done
+  done
+fi
+if want liao; then
+  echo "== DualSPHysics' FlexStruc Liao 2D as shipped (CaseDambreak2D_FSI_Def.xml: dp 2 mm, plate 8 mm = 4 particles," | tee -a "$table"
+  echo "   nu 0.49, plane strain, TimeMax 1 s): plate top (0.6, 0, 0.09) horizontal displacement (GPU)" | tee -a "$table"
+  cp "$root/build-dev/shared-cases/flexstruc/DambreakGateTimeSeries.csv" "$work/"
+  for sc in 0 1; do
+    sed "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+      "$root/build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" >"$work/Liao_$sc.xml"
+    c="liao_$sc"
+    "$bin/gencase" "$work/Liao_$sc.xml" "$work/$c" >"$work/$c.gencase.log" 2>&1 || tail -3 "$work/$c.gencase.log"
+    start=$(date +%s)
+    "$bin/seaspring" -gpu -overwrite -progress:0 "$work/$c" "$work/o_$c" >"$work/$c.log" 2>&1 || tail -3 "$work/$c.log"
+    wall=$(( $(date +%s) - start ))
+    "$py" "$root/tools/solid_marker.py" "$work/o_$c" --point 0.6,0,0.09 --csv "$out/liao2d_top_sc$sc.csv" >/dev/null
+    "$py" - "$out/liao2d_top_sc$sc.csv" "$sc" "$wall" <<'EOF' | tee -a "$table"
+import sys, numpy as np
+d = np.genfromtxt(sys.argv[1], delimiter=';', names=True)
+i = int(np.argmax(d['dx_m']))
+print("  correction %s: peak dx %.4f m at t %.3f s (dz there %.4f m); dx at 1 s %.4f m  (%s s wall)" %
+      (sys.argv[2], d['dx_m'][i], d['time_s'][i], d['dz_m'][i], d['dx_m'][-1], sys.argv[3]))
+EOF
   done
 fi
 cat "$table"

@@ -9,6 +9,8 @@
 ///   U = sum_I [ 1/2 sum_J k_IJ dl_IJ^2 + 1/2 T (sum_J dl_IJ)^2 ]
 /// so the force on I along u_IJ = (r_I - r_J)/|r_I - r_J| is
 ///   f_IJ = -k_IJ dl_IJ - T/2 (S_I + S_J),   S_I = sum_Q dl_IQ   (Eq. 13).
+/// With the surface correction's volumetric weights (vcpm_surface.h), S_I = sum_Q w_IQ dl_IQ
+/// and f_IJ = -k_IJ dl_IJ - T/2 (w_IJ S_I + w_JI S_J); a complete site's weights are 1.
 /// 3D simple cubic lattice (6 first + 12 second neighbours), R = dp/2 (Eqs. 8-9):
 ///   k = 2RE/(1+nu) for both shells,  T = RE(4nu-1)/((9+4 sqrt2)(1+nu)(1-2nu)).
 /// 2D square lattice (4 + 4 neighbours, plane strain, per unit thickness), derived in
@@ -120,6 +122,10 @@ struct SolidBonds {
     const std::uint8_t* flags = nullptr;  ///< VcpmBondFlag
     std::uint8_t* broken = nullptr;       ///< 1 once the bond has broken (never heals)
     const double* kfac = nullptr;         ///< surface correction of each slot's stiffness (null: none; vcpm_surface.h)
+    /// Volumetric weights (null: none; vcpm_surface.h): the slot's weight in its own site's sum
+    /// S*, and the mirror slot's in the partner's (1 for a clamp node).
+    const double* vw = nullptr;
+    const double* vw_partner = nullptr;
 };
 
 /// Clamp nodes: the boundary particles that clamp bonds reach. Their positions are prescribed
@@ -274,7 +280,8 @@ SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const 
             b.broken[k] = 1;
         }
         if (!br && bondPastBound(len, rest)) raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, rest), t);
-        sum += br ? 0.0 : halfElongation(len, rest);
+        const double dl = halfElongation(len, rest);
+        sum += br ? 0.0 : (b.vw ? b.vw[k] * dl : dl);
     }
     return sum;
 }
@@ -315,7 +322,8 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
         double dx, dy, dz;
         const double len = bondVector(p, pj, dx, dy, dz);
         const double kb = b.kfac ? bondStiffness(m, b.flags[k]) * b.kfac[k] : bondStiffness(m, b.flags[k]);
-        const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), sum_s, sum_j) / len;
+        const double si = b.vw ? b.vw[k] * sum_s : sum_s, sj = b.vw ? b.vw_partner[k] * sum_j : sum_j;
+        const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), si, sj) / len;
         fx += fm * dx;
         fy += fm * dy;
         fz += fm * dz;

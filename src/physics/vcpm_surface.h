@@ -21,6 +21,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
@@ -28,8 +30,10 @@ namespace seaspring::physics {
 /// Spring and volumetric energy of a site under the uniaxial-stress strain along axis d
 /// (lateral strain -nu_l on the other axes; `dim` 2: the lattice's x-z plane) of bonds with
 /// rest vectors `r` (to each partner) and stiffnesses `k`; `t_half` = T/2.
+/// `w`: the volumetric weights of the bonds (volumetricWeights; empty: all 1).
 inline void uniformStrainEnergy(const std::vector<Double3>& r, const std::vector<double>& k, double t_half, int d,
-                                double nu_l, int dim, double& spring, double& volumetric) {
+                                double nu_l, int dim, double& spring, double& volumetric,
+                                const std::vector<double>& w = {}) {
     spring = 0;
     double sum = 0;
     for (std::size_t j = 0; j < r.size(); ++j) {
@@ -42,7 +46,7 @@ inline void uniformStrainEnergy(const std::vector<Double3>& r, const std::vector
         }
         const double dl = 0.5 * l0 * e;
         spring += 0.5 * k[j] * dl * dl;
-        sum += dl;
+        sum += w.empty() ? dl : w[j] * dl;
     }
     volumetric = t_half * sum * sum;
 }
@@ -65,5 +69,83 @@ inline double bondSurfaceFactor(const Double3& n, const Double3& gi, const Doubl
     if (gx == 1.0 && gy == 1.0 && gz == 1.0) return 1.0;  // exactly: n may be a rounding off unit length
     return 1.0 / std::sqrt(n.x * n.x / (gx * gx) + n.y * n.y / (gy * gy) + n.z * n.z / (gz * gz));
 }
+
+/// The volumetric weights w_J of a site's bonds (rest vectors r to its partners; `dim` 2: the
+/// lattice's x-z plane; `alpha` the complete site's, below). Under a uniform strain eps each
+/// bond has dl_J = 1/2 L_J n_J.eps.n_J, so the weighted sum
+///     S* = sum_J w_J dl_J = 1/2 (sum_J w_J L_J n_J (x) n_J) : eps.
+/// A complete site has sum_J L_J n_J (x) n_J = alpha I (alpha = (2 + 2 sqrt2) dp in 2D,
+/// (2 + 4 sqrt2) dp in 3D): its S measures tr(eps) alone. A site that lacks bonds does not:
+/// along a free surface its S also sees the strain along the surface, so near nu = 1/2 (T
+/// large) a bent plate's surface pays volumetric energy for a deformation that keeps its
+/// volume, and thin plates stiffen. The weights make the site's tensor isotropic again: the w
+/// nearest to 1 (least squares) with
+///     sum_J w_J L_J n_J (x) n_J = alpha_I I,
+/// the minimum-norm correction w = 1 + A^T lambda of the linear constraints (one row per
+/// component of the symmetric tensor), solved with Eigen's complete orthogonal decomposition.
+/// alpha_I: first left free (only the deviatoric part vanishes; the solution's alpha_I is
+/// 0.57 alpha on a 2D face, 0.64 on a 3D face, 0.21-0.31 on edges, 0.13 at a 3D corner). Where
+/// that free alpha_I is at least alpha/2 (a face site: it lacks the bonds of one side), the
+/// weights are solved again with alpha_I = alpha, so that its S* is a complete site's (its
+/// weights stay within 1.03-2.1). Edges and corners keep the free solution: with alpha_I =
+/// alpha their weights reach 3.6 (2D) to 7.7 (3D corner), and the 3D cantilever 4 particles
+/// thick at nu = 0.49 then blew up at VcpmDtCoef 0.8 (docs/vcpm.md). A site with all its
+/// bonds has w = 1. Empty when no weights satisfy the constraints (a site whose bonds cannot
+/// make an isotropic tensor): the site keeps its plain sum.
+inline std::vector<double> volumetricWeights(const std::vector<Double3>& r, int dim, double alpha) {
+    const std::size_t nb = r.size();
+    const Eigen::Index n = Eigen::Index(nb);
+    // The components of r_J (x) r_J / L_J: 2D (xx, zz, xz), 3D (xx, yy, zz, xy, xz, yz).
+    const int nc = dim == 2 ? 3 : 6, nd = dim == 2 ? 2 : 3;
+    Eigen::MatrixXd C(nc, n);
+    for (std::size_t j = 0; j < nb; ++j) {
+        const Double3 v = r[j];
+        const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        const Eigen::Index c = Eigen::Index(j);
+        if (dim == 2) {
+            C(0, c) = v.x * v.x / l;
+            C(1, c) = v.z * v.z / l;
+            C(2, c) = v.x * v.z / l;
+        } else {
+            C(0, c) = v.x * v.x / l;
+            C(1, c) = v.y * v.y / l;
+            C(2, c) = v.z * v.z / l;
+            C(3, c) = v.x * v.y / l;
+            C(4, c) = v.x * v.z / l;
+            C(5, c) = v.y * v.z / l;
+        }
+    }
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n);
+    // w = 1 + A^T lambda with A A^T lambda = b - A 1: the w nearest to 1 with A w = b.
+    auto solve = [&](const Eigen::MatrixXd& A, const Eigen::VectorXd& b) -> Eigen::VectorXd {
+        const Eigen::MatrixXd g = A * A.transpose();
+        const Eigen::VectorXd lambda = g.completeOrthogonalDecomposition().solve(b - A * ones);
+        const Eigen::VectorXd w = ones + A.transpose() * lambda;
+        if (!((A * w - b).norm() <= 1e-12 * (alpha + b.norm()))) return Eigen::VectorXd();
+        return w;
+    };
+    // Free alpha_I: consecutive diagonal differences and the off-diagonal components vanish.
+    Eigen::MatrixXd A_free(nc - 1, n);
+    for (int d = 0; d + 1 < nd; ++d) A_free.row(d) = C.row(d) - C.row(d + 1);
+    for (int o = nd; o < nc; ++o) A_free.row(o - 1) = C.row(o);
+    Eigen::VectorXd w = solve(A_free, Eigen::VectorXd::Zero(nc - 1));
+    if (w.size() == 0 || !(w.sum() > 0.5)) return {};
+    const double alpha_free = (C.topRows(nd) * w).sum() / nd;
+    if (alpha_free >= 0.5 * alpha) {  // a face site: the complete site's alpha
+        Eigen::VectorXd b = Eigen::VectorXd::Zero(nc);
+        b.head(nd).setConstant(alpha);
+        const Eigen::VectorXd wf = solve(C, b);
+        if (wf.size() == n) w = wf;
+    }
+    return std::vector<double>(w.data(), w.data() + nb);
+}
+
+/// The factor of a clamp bond's stiffness. A clamp node is a site of the rigid support: the
+/// half of the bond inside its cell does not deform, so the bond's whole elongation is the
+/// strain of its solid half, of half the rest length, whose stiffness is twice the bond's.
+/// Without it the clamp acts half a bond further into the support than the support's face
+/// (the cells' boundary between the clamp row and the first solid row), and a cantilever
+/// is longer by about dp/2 (issue 13: "the clamp plane shifts the effective length by O(dp)").
+constexpr double kClampBondFactor = 2.0;
 
 }  // namespace seaspring::physics

@@ -67,7 +67,7 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
             const double dl = physics::halfElongation(physics::bondVector(p, st.pos[j_id], dx, dy, dz), so.rest[k]);
             const double kb = physics::bondStiffness(mat, so.flags[k]) * (so.kfac.empty() ? 1.0 : so.kfac[k]);
             springs += physics::bondSpringEnergy(kb, dl, clamp);
-            sum += dl;
+            sum += so.vw.empty() ? dl : so.vw[k] * dl;
         }
         r.elastic += springs + physics::siteVolumetricEnergy(mat.t_half, sum);
     }

@@ -22,7 +22,7 @@ struct SolidArrays {
     std::uint32_t n = 0, nclamp = 0, first = 0;
     Buf<std::uint8_t> count, flags, broken, broken_saved;
     Buf<std::uint32_t> partner, slot;
-    Buf<double> rest, sum, work, kfac;
+    Buf<double> rest, sum, work, kfac, vw, vw_partner;
     Buf<std::uint16_t> body;
     Buf<physics::VcpmMaterial> materials;
     Buf<physics::Double3> pos, pos_half, vel, vel0, fluid_force;
@@ -56,6 +56,8 @@ struct SolidArrays {
         assignFrom(rest, s.rest);
         assignFrom(flags, s.flags);
         assignFrom(kfac, s.kfac);
+        assignFrom(vw, s.vw);
+        assignFrom(vw_partner, s.vw_partner);
         assignFrom(broken, std::vector<std::uint8_t>(s.flags.size(), 0));
         assignFrom(body, s.body);
         assignFrom(materials, s.materials);
@@ -126,6 +128,8 @@ struct SolidArrays {
         b.flags = flags.data();
         b.broken = broken.data();
         b.kfac = kfac.empty() ? nullptr : kfac.data();
+        b.vw = vw.empty() ? nullptr : vw.data();
+        b.vw_partner = vw_partner.empty() ? nullptr : vw_partner.data();
         return b;
     }
 

@@ -3,6 +3,7 @@
 #include "solver/solid_setup.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -260,10 +261,35 @@ void surfaceCorrection(SolidSetup& s) {
         }
         bulk[b] = physics::Double3{e[0], e[1], e[2]};
     }
-    // g per particle and axis (1 for a complete site, and along y in 2D).
-    std::vector<physics::Double3> g(n, physics::Double3{1, 1, 1});
+    // The volumetric weights of each site (1 for a complete site): its S* measures tr(eps) alone.
     std::vector<physics::Double3> rv;
     std::vector<double> kv;
+    double alpha = 0;  // sum_J L_J n_J,x^2 of a complete site (the stencil)
+    for (std::size_t q = 0; q < stencil.size(); ++q) {
+        const physics::Double3 u = stencil[q];
+        alpha += u.x * u.x / std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z) * dp;
+    }
+    std::vector<std::vector<double>> site_w(n);
+    s.vw.assign(s.rest.size(), 1.0);
+    s.vw_partner.assign(s.rest.size(), 1.0);
+    for (std::uint32_t r = 0; r < n; ++r) {
+        if (s.count[r] == s.max_bonds) continue;
+        bondsOf(r, rv, kv);
+        site_w[r] = physics::volumetricWeights(rv, dim, alpha);
+        for (std::size_t q = 0; q < site_w[r].size(); ++q) s.vw[q * n + r] = site_w[r][q];
+    }
+    for (std::uint32_t r = 0; r < n; ++r)  // the mirror slot's weight (a clamp node's: 1)
+        for (int q = 0; q < s.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * n + r;
+            if (s.flags[k] & physics::kBondClamp) continue;
+            const std::uint32_t j = s.partner[k];
+            for (int p = 0; p < s.count[j]; ++p) {
+                const std::size_t m = std::size_t(p) * n + j;
+                if (!(s.flags[m] & physics::kBondClamp) && s.partner[m] == r) s.vw_partner[k] = s.vw[m];
+            }
+        }
+    // g per particle and axis (1 for a complete site, and along y in 2D).
+    std::vector<physics::Double3> g(n, physics::Double3{1, 1, 1});
     for (std::uint32_t r = 0; r < n; ++r) {
         if (s.count[r] == s.max_bonds) continue;
         bondsOf(r, rv, kv);
@@ -273,7 +299,7 @@ void surfaceCorrection(SolidSetup& s) {
         for (int d = 0; d < 3; ++d) {
             if (dim == 2 && d == 1) continue;
             double p, v;
-            physics::uniformStrainEnergy(rv, kv, s.materials[s.body[r]].t_half, d, lateral(s.body[r]), dim, p, v);
+            physics::uniformStrainEnergy(rv, kv, s.materials[s.body[r]].t_half, d, lateral(s.body[r]), dim, p, v, site_w[r]);
             f[d] = physics::surfaceFactor(wd[d], p, v);
         }
         g[r] = physics::Double3{f[0], f[1], f[2]};
@@ -289,6 +315,7 @@ void surfaceCorrection(SolidSetup& s) {
             const physics::Double3 v = rv[q];
             const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
             s.kfac[k] = physics::bondSurfaceFactor(physics::Double3{v.x / l, v.y / l, v.z / l}, g[r], gj);
+            if (clamp) s.kfac[k] *= physics::kClampBondFactor;
         }
     }
 }

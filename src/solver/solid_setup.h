@@ -27,6 +27,7 @@ struct SolidSetup {
     std::vector<double> rest;                ///< rest lengths [m]
     std::vector<std::uint8_t> flags;         ///< physics::VcpmBondFlag
     std::vector<double> kfac;                ///< surface correction of each slot's stiffness (empty: none)
+    std::vector<double> vw, vw_partner;      ///< volumetric weights of each slot and of its mirror (empty: none)
     std::vector<std::uint16_t> body;         ///< [nsolid] material index
     std::vector<physics::VcpmMaterial> materials;
     std::vector<double> poisson;             ///< the lattice's Poisson's ratio of each body (plane stress: nu')

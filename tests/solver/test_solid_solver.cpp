@@ -263,14 +263,15 @@ struct CantileverResult {
 
 /// `plane_stress`: the same beam with constitmodel="2" (physics::planeStressEquivalent);
 /// `surface`: with VcpmSurfaceCorrection 1 (physics/vcpm_surface.h).
-CantileverResult runCantilever(double dp, bool plane_stress = false, bool surface = false) {
+CantileverResult runCantilever(double dp, bool plane_stress = false, bool surface = false, const char* nu = "0.3975") {
+    const bool other_nu = std::string(nu) != "0.3975";
     const std::string dir = scratch("cl" + std::to_string(int(std::lround(dp * 1e5))) + (plane_stress ? "ps" : "") +
-                                    (surface ? "sc" : ""));
+                                    (surface ? "sc" : "") + (other_nu ? std::string("nu") + nu : std::string()));
     std::string kase;
-    if (plane_stress || surface) {
+    if (plane_stress || surface || other_nu) {
         std::string def = test::readFile(caseDef("cantilever2d/Cantilever2D_Def.xml"));
-        if (plane_stress)
-            def = test::replaceOnce(def, "poissratio=\"0.3975\"", "poissratio=\"0.3975\" constitmodel=\"2\"");
+        def = test::replaceOnce(def, "poissratio=\"0.3975\"",
+                                std::string("poissratio=\"") + nu + "\"" + (plane_stress ? " constitmodel=\"2\"" : ""));
         if (surface)
             def = test::replaceOnce(def, "<parameters>", "<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"1\" />");
         kase = test::generateCase(dir, "cl", def, dp);
@@ -394,27 +395,38 @@ TEST(SolidSolver, SurfaceCorrectionFactorsAreSymmetricAndOneInside) {
     EXPECT_LT(g_top, 2.0);
 }
 
-// The surface correction (VcpmSurfaceCorrection 1, physics/vcpm_surface.h) on the same beam
-// (nu = 0.3975, L/t = 10): against Timoshenko's first frequency (0.9907 x Euler-Bernoulli's,
-// from a converged Timoshenko finite-element beam with Cowper's shear factor; docs/vcpm.md)
-// the lattice is -13.5 % (4 particles thick) and -6.7 % (8) without it; with it -6.6 % and
-// -1.1 % (measured). Checked: within 2 % at 8 particles, and at 4 particles half the error
-// without it at most. Broken on purpose (the uniaxial-strain state, lateral strain 0, in place
-// of the uniaxial stress): +9.9 % and +11.7 %, both fail.
-TEST(SolidSolver, Cantilever2DSurfaceCorrectionMeetsTimoshenkoAtEightParticles) {
-    const double E = 2e6, nu = 0.3975, rho = 1000, t = 0.02, L = 0.2;
-    const double Ep = E / (1 - nu * nu), I = t * t * t / 12, pi = std::acos(-1.0);
-    const double f_t = 0.9907 * 1.8751 * 1.8751 / (2 * pi) * std::sqrt(Ep * I / (rho * t * std::pow(L, 4)));
-    const double dps[2] = {0.005, 0.0025};
-    for (int k = 0; k < 2; ++k) {
-        const CantileverResult c = runCantilever(dps[k], false, true);
-        ASSERT_GE(c.osc.crossings, 5) << dps[k];
-        EXPECT_TRUE(c.finite) << dps[k];
-        const double err = c.osc.frequency / f_t - 1;
-        std::printf("surface correction, dp %.4f (%u thick): f %.4f Hz, Timoshenko %.4f Hz: %+.2f %%\n", dps[k],
-                    c.thickness, c.osc.frequency, f_t, 100 * err);
-        if (k == 1) EXPECT_LT(std::fabs(err), 0.02);
-        else EXPECT_LT(std::fabs(err), 0.5 * 0.135);
+// The surface correction (VcpmSurfaceCorrection 1, physics/vcpm_surface.h: spring factors,
+// volumetric weights, clamp bonds) on the same beam (L/t = 10) against Timoshenko's first
+// frequency (a converged Timoshenko finite-element beam with Cowper's shear factor, plane
+// strain: 0.9907 x Euler-Bernoulli's at nu = 0.3975, 0.9895 at nu = 0.49; docs/vcpm.md).
+// Measured, 4 / 8 particles thick: nu 0.3975 -4.84 % / -0.47 % (the plain lattice -13.5 % /
+// -6.7 %); nu 0.49 -1.87 % / -0.26 % (the plain lattice +9.0 % / +3.8 %: too stiff). Checked:
+// nu 0.49 within 3 % and 1 % (issue 13 asks 4 % at 4 particles and 2 % at 8), nu 0.3975
+// within 5.5 % and 1 %. Broken on purpose, each fails: the spring factors' reference state
+// set to uniaxial strain (+9.9 % / +11.7 % at nu 0.3975, before the weights); the volumetric
+// weights left out (nu 0.49 +9.9 % / +4.2 %); the face sites' alpha_I = alpha rule left out
+// (free alpha_I everywhere: nu 0.49 -3.43 % at 4); the clamp bonds' factor 1 in place of 2.
+TEST(SolidSolver, Cantilever2DSurfaceCorrectionMeetsTimoshenko) {
+    const double E = 2e6, rho = 1000, t = 0.02, L = 0.2, pi = std::acos(-1.0);
+    struct Case {
+        const char* nu;
+        double timoshenko_over_eb, bound4, bound8;
+    };
+    for (const Case& cs : {Case{"0.3975", 0.9907, 0.055, 0.01}, Case{"0.49", 0.9895, 0.03, 0.01}}) {
+        const double nu = std::stod(cs.nu);
+        const double Ep = E / (1 - nu * nu), I = t * t * t / 12;
+        const double f_t =
+            cs.timoshenko_over_eb * 1.8751 * 1.8751 / (2 * pi) * std::sqrt(Ep * I / (rho * t * std::pow(L, 4)));
+        const double dps[2] = {0.005, 0.0025};
+        for (int k = 0; k < 2; ++k) {
+            const CantileverResult c = runCantilever(dps[k], false, true, cs.nu);
+            ASSERT_GE(c.osc.crossings, 5) << dps[k];
+            EXPECT_TRUE(c.finite) << dps[k];
+            const double err = c.osc.frequency / f_t - 1;
+            std::printf("surface correction, nu %s, dp %.4f (%u thick): f %.4f Hz, Timoshenko %.4f Hz: %+.2f %%\n",
+                        cs.nu, dps[k], c.thickness, c.osc.frequency, f_t, 100 * err);
+            EXPECT_LT(std::fabs(err), k == 0 ? cs.bound4 : cs.bound8) << cs.nu << " dp " << dps[k];
+        }
     }
 }
 

@@ -1,0 +1,162 @@
+// SeaSpring — MIT licence.
+/// \file vcpm_block.h
+/// \brief Test helper: a small VCPM lattice block built from gencase's lattice offsets, in the
+///        SolidBonds layout, with the force (through physics/vcpm.h's passes), an independent
+///        energy, affine and random displacements. Used by test_vcpm_physics.cpp and
+///        test_vcpm_surface.cpp.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/vec3.h"
+#include "gencase/vcpm_bonds.h"
+#include "physics/vcpm.h"
+
+namespace seaspring::test {
+
+using physics::ClampNodes;
+using physics::Double3;
+using physics::kBondSecond;
+using physics::SolidBonds;
+using physics::SolidState;
+using physics::VcpmMaterial;
+using Mat3 = std::array<std::array<double, 3>, 3>;
+
+/// A block of nx*ny*nz lattice sites (2D: ny = 1, sites in the x-z plane), centred on the origin,
+/// with all its solid-solid bonds in the SolidBonds layout (slots compacted in offset order).
+struct Block {
+    bool two_d;
+    int nx, ny, nz;
+    double dp;
+    VcpmMaterial mat;
+    std::uint32_t n;
+    std::vector<Vec3i> site;
+    std::vector<Double3> ref, pos, pos_half, vel, vel0, ffluid;
+    std::vector<std::uint8_t> count, flags, broken;
+    std::vector<std::uint32_t> partner, mirror;  // mirror: slot of the same bond at the partner
+    std::vector<double> rest, sum;
+    std::vector<double> vw, vw_partner;  // volumetric weights (empty: none; physics/vcpm_surface.h)
+    std::vector<std::uint16_t> body;
+
+    Block(bool td, int nx_, int ny_, int nz_, double dp_, const VcpmMaterial& m)
+        : two_d(td), nx(nx_), ny(td ? 1 : ny_), nz(nz_), dp(dp_), mat(m), n(std::uint32_t(nx * ny * nz)) {
+        for (int k = 0; k < nz; ++k)
+            for (int j = 0; j < ny; ++j)
+                for (int i = 0; i < nx; ++i) {
+                    site.push_back({i, j, k});
+                    ref.push_back({(i - 0.5 * (nx - 1)) * dp, two_d ? 0.0 : (j - 0.5 * (ny - 1)) * dp,
+                                   (k - 0.5 * (nz - 1)) * dp});
+                }
+        const auto& off = gencase::latticeOffsets(two_d);
+        const std::size_t nfirst = gencase::firstNeighbourCount(two_d), slots = off.size() * n;
+        count.assign(n, 0);
+        flags = broken = std::vector<std::uint8_t>(slots, 0);
+        partner = mirror = std::vector<std::uint32_t>(slots, 0);
+        rest.assign(slots, 0.0);
+        for (std::uint32_t s = 0; s < n; ++s)
+            for (std::size_t q = 0; q < off.size(); ++q) {
+                const int i = site[s].x + off[q].x, j = site[s].y + off[q].y, k = site[s].z + off[q].z;
+                if (i < 0 || i >= nx || j < 0 || j >= ny || k < 0 || k >= nz) continue;
+                const std::uint32_t sl = slot(s, count[s]++);
+                partner[sl] = at(i, j, k);
+                rest[sl] = q < nfirst ? dp : std::sqrt(2.0) * dp;
+                flags[sl] = q < nfirst ? 0 : kBondSecond;
+            }
+        for (std::uint32_t s = 0; s < n; ++s)
+            for (int q = 0; q < count[s]; ++q) {
+                const std::uint32_t j = partner[slot(s, q)];
+                for (int q2 = 0; q2 < count[j]; ++q2)
+                    if (partner[slot(j, q2)] == s) mirror[slot(s, q)] = slot(j, q2);
+            }
+        pos = pos_half = ref;
+        vel = vel0 = ffluid = std::vector<Double3>(n, Double3{0, 0, 0});
+        sum.assign(n, 0.0);
+        body.assign(n, 0);
+    }
+    std::uint32_t at(int i, int j, int k) const { return std::uint32_t((k * ny + j) * nx + i); }
+    std::uint32_t slot(std::uint32_t s, int q) const { return std::uint32_t(q) * n + s; }
+    /// True when every neighbour of s has a complete neighbourhood (>= 2 sites from each face).
+    bool deep(std::uint32_t s) const {
+        auto ok = [](int i, int m) { return i >= 2 && i < m - 2; };
+        return ok(site[s].x, nx) && ok(site[s].z, nz) && (two_d || ok(site[s].y, ny));
+    }
+    SolidBonds bonds() {
+        SolidBonds b{n, count.data(), partner.data(), rest.data(), flags.data(), broken.data()};
+        if (!vw.empty()) {
+            b.vw = vw.data();
+            b.vw_partner = vw_partner.data();
+        }
+        return b;
+    }
+    SolidState state() {
+        SolidState st;
+        st.pos = pos.data();
+        st.pos_half = pos_half.data();
+        st.vel = vel.data();
+        st.vel0 = vel0.data();
+        st.sum = sum.data();
+        st.fluid_force = ffluid.data();
+        st.body = body.data();
+        st.material = &mat;
+        return st;  // no alarms array: raiseSolidAlarm ignores a null one
+    }
+};
+
+/// S (pass 1, may break bonds) then the bond force on every particle at positions x.
+inline std::vector<Double3> forces(Block& b, const std::vector<Double3>& x) {
+    const SolidState st = b.state();
+    const SolidBonds sb = b.bonds();
+    const ClampNodes cn{};
+    for (std::uint32_t s = 0; s < b.n; ++s) b.sum[s] = physics::solidSumAt(s, x.data(), st, sb, cn, 0.0);
+    std::vector<Double3> f(b.n);
+    for (std::uint32_t s = 0; s < b.n; ++s) f[s] = physics::solidBondForceAt(s, x.data(), st, sb, cn, 0.0);
+    return f;
+}
+
+inline double norm(const Double3& a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
+inline double& comp(Double3& a, int c) { return c == 0 ? a.x : c == 1 ? a.y : a.z; }
+
+/// Adds a uniform random displacement in [-amp, amp] to each in-plane coordinate.
+inline void perturb(std::vector<Double3>& x, double amp, bool two_d, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(-amp, amp);
+    for (Double3& p : x)
+        for (int c = 0; c < 3; ++c)
+            if (!two_d || c != 1) comp(p, c) += u(rng);
+}
+
+/// Lattice energy U = sum_I [1/2 sum_J k dl^2 + 1/2 T S_I^2] over intact bonds (independent code;
+/// S_I weighted by b.vw when the block has volumetric weights).
+inline double energy(const Block& b, const std::vector<Double3>& x) {
+    double u = 0.0;
+    for (std::uint32_t s = 0; s < b.n; ++s) {
+        double S = 0.0;
+        for (int q = 0; q < b.count[s]; ++q) {
+            const std::uint32_t k = b.slot(s, q);
+            if (b.broken[k]) continue;
+            const Double3 a = x[s], c = x[b.partner[k]];
+            const double dl = 0.5 * (norm(Double3{a.x - c.x, a.y - c.y, a.z - c.z}) - b.rest[k]);
+            u += 0.5 * ((b.flags[k] & kBondSecond) ? b.mat.k_second : b.mat.k_first) * dl * dl;
+            S += b.vw.empty() ? dl : b.vw[k] * dl;
+        }
+        u += b.mat.t_half * S * S;  // 1/2 T S^2 with T = 2 t_half
+    }
+    return u;
+}
+
+/// x = (I + scale eps) ref; with id = 0, x = scale eps ref.
+inline std::vector<Double3> affine(const Block& b, const Mat3& e, double scale, double id = 1.0) {
+    std::vector<Double3> x(b.n);
+    for (std::uint32_t s = 0; s < b.n; ++s) {
+        Double3 r = b.ref[s], y;
+        for (int i = 0; i < 3; ++i)
+            comp(y, i) = id * comp(r, i) + scale * (e[i][0] * r.x + e[i][1] * r.y + e[i][2] * r.z);
+        x[s] = y;
+    }
+    return x;
+}
+
+}  // namespace seaspring::test
