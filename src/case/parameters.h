@@ -53,7 +53,7 @@ struct SolverParameters {
     double vcpm_contact_stiffness = 0.5;  ///< contact stiffness / first-neighbour bond stiffness
     double vcpm_contact_damping = 0.5;    ///< fraction of critical damping of the normal dashpot
     double vcpm_contact_friction = 0;     ///< Coulomb friction coefficient
-    int vcpm_surface_correction = 0;      ///< 1: surface correction of the lattice (physics/vcpm_surface.h)
+    int vcpm_surface_correction = 1;      ///< 1: surface correction of the lattice (physics/vcpm_surface.h); 0: plain
 };
 
 /// An axis-aligned box [m].

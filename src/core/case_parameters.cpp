@@ -68,7 +68,7 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"VcpmContactStiffness", "0.5", K::Number, "VCPM contact stiffness / first-neighbour bond stiffness (SeaSpring)"},
         {"VcpmContactDamping", "0.5", K::Number, "VCPM contact normal damping, fraction of critical (SeaSpring)"},
         {"VcpmContactFriction", "0", K::Number, "VCPM contact Coulomb friction coefficient (SeaSpring)"},
-        {"VcpmSurfaceCorrection", "0", K::Number, "VCPM surface correction of bond stiffness 0:none, 1:energy-based (SeaSpring)"},
+        {"VcpmSurfaceCorrection", "1", K::Number, "VCPM surface correction 0:none (the plain lattice), 1:surface springs, volumetric weights and clamp bonds (SeaSpring)"},
     };
     return table;
 }

@@ -140,6 +140,36 @@ inline std::vector<double> volumetricWeights(const std::vector<Double3>& r, int 
     return std::vector<double>(w.data(), w.data() + nb);
 }
 
+/// The sub-step limit of the corrected lattice. The explicit sub-step is stable while
+/// dt < 2 / omega_max, omega_max^2 = lambda_max(K) / m, K the lattice's stiffness matrix (the
+/// Hessian of U in the particles' positions). Stronger springs and weighted volumetric sums at
+/// the surface raise lambda_max above the plain bulk lattice's, for which VcpmDtCoef (0.8) is
+/// calibrated: the 2D Antoci gate, 2 particles thick (every site a face site), blew up at 0.8
+/// with the correction and ran at 0.3. Gershgorin's bound lambda_max <= max_row sum_col |K|
+/// gives the margin: linearised, with e_IJ = |r_IJ| - L0 and b_IJ the unit vector u_IJ = (r_J -
+/// r_I)/|r_J - r_I| placed -u at I and +u at J (e_IJ = b_IJ . x),
+///     U = sum_bonds k_IJ/4 e_IJ^2 + sum_sites t_half/4 (sum_J w_IJ e_IJ)^2,
+///     K = sum_bonds k_IJ/2 b b^T + sum_sites t_half/2 g_I g_I^T,   g_I = sum_J w_IJ b_IJ,
+/// so each rank-1 term c v v^T adds |c| |v_a| ||v||_1 to row a (rigid clamp nodes carry no
+/// rows). The sub-step is scaled by sqrt(R_bulk / R_max) when the corrected lattice's largest
+/// row sum R_max exceeds the plain bulk site's R_bulk (never above 1).
+///
+/// R_bulk, component c, of a complete site of the plain lattice (the stencil's unit vectors u_J
+/// and stiffnesses k_J): its springs sum_J k_J |u_J,c| ||u_J||_1 (a bond's term reaches both
+/// ends), its own volumetric term nothing (sum_J u_J = 0), and each neighbour's
+/// t_half/2 |u_J,c| sum_J' ||u_J'||_1.
+inline double plainBulkRowBound(const std::vector<Double3>& u, const std::vector<double>& k, double t_half, int c) {
+    auto comp = [c](const Double3& v) { return std::fabs(c == 0 ? v.x : c == 1 ? v.y : v.z); };
+    auto norm1 = [](const Double3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); };
+    double springs = 0, sum_norm = 0, sum_c = 0;
+    for (std::size_t j = 0; j < u.size(); ++j) {
+        springs += k[j] * comp(u[j]) * norm1(u[j]);
+        sum_norm += norm1(u[j]);
+        sum_c += comp(u[j]);
+    }
+    return springs + 0.5 * std::fabs(t_half) * sum_c * sum_norm;
+}
+
 /// The factor of a clamp bond's stiffness. A clamp node is a site of the rigid support: the
 /// half of the bond inside its cell does not deform, so the bond's whole elongation is the
 /// strain of its solid half, of half the rest length, whose stiffness is twice the bond's.

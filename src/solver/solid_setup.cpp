@@ -12,6 +12,7 @@
 #include "physics/blowup_bounds.h"
 #include "physics/solid_contact.h"
 #include "physics/vcpm_surface.h"
+#include "solver/solid_stability.h"
 #include "solver/solver_case.h"
 
 namespace seaspring::solver {
@@ -49,7 +50,9 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         mat.max_speed = physics::solidSpeedBound(el.wave_speed, c.constants.speedsound);
         s.materials.push_back(mat);
         s.poisson.push_back(poisson);
-        dt = std::min(dt, physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
+        s.elastic_dt.push_back(physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
+        s.dt_scale.push_back(1.0);
+        dt = std::min(dt, s.elastic_dt.back());
         const physics::VcpmMaterial& m = s.materials.back();
         s.body_lines.push_back("solid mkbound=" + std::to_string(sb.mkbound) + ": rho " + shortText(sb.density, 6) +
                                ", E " + shortText(sb.youngmod, 6) + ", nu " + shortText(sb.poissratio, 6) +
@@ -318,6 +321,15 @@ void surfaceCorrection(SolidSetup& s) {
             if (clamp) s.kfac[k] *= physics::kClampBondFactor;
         }
     }
+    // The corrected lattice's sub-step (solid_stability.h), with contact's limit kept.
+    s.dt_scale = correctedSubStepScales(s);
+    double dt = s.contact_on ? s.contact_dt : 1e300;
+    for (std::size_t b = 0; b < s.materials.size(); ++b) {
+        dt = std::min(dt, s.elastic_dt[b] * s.dt_scale[b]);
+        if (b < s.body_lines.size())
+            s.body_lines[b] += ", surface correction (sub-step x " + shortText(s.dt_scale[b], 4) + ")";
+    }
+    s.dt = dt;
 }
 
 std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken) {

@@ -52,7 +52,9 @@ struct SolidSetup {
     physics::ContactParams contact;
     std::uint32_t contact_cap = 0;  ///< candidates per particle
     double contact_dt = 0;          ///< its sub-step limit [s] (included in dt)
-    double dt = 0;                 ///< solid sub-step: min over bodies of VcpmDtCoef dp / c_S [s]
+    double dt = 0;                 ///< solid sub-step: min over bodies of VcpmDtCoef dp / c_S (x the correction's factor) and contact_dt [s]
+    std::vector<double> elastic_dt;  ///< per body, VcpmDtCoef dp / c_S [s]
+    std::vector<double> dt_scale;    ///< per body, the surface correction's sub-step factor (solid_stability.h; 1 without it)
     std::uint64_t bonds = 0, clamp_bonds = 0;  ///< solid-solid pairs (once), clamp bonds
     std::vector<std::string> body_lines;       ///< one printable line per body
 
@@ -63,8 +65,9 @@ struct SolidSetup {
 /// seaspring::Error (file:line of the resolved case) when a solid particle's MK has no body.
 SolidSetup makeSolidSetup(const SolverCase& c);
 
-/// VcpmSurfaceCorrection: fills `kfac` (physics/vcpm_surface.h) from the bonds and the
-/// particles' initial positions.
+/// VcpmSurfaceCorrection: fills `kfac`, `vw` and `vw_partner` (physics/vcpm_surface.h) from
+/// the bonds and the particles' initial positions, and scales each body's sub-step by the
+/// corrected lattice's stability margin (solid_stability.h).
 void surfaceCorrection(SolidSetup& s);
 
 /// Broken-bond count of every solid particle (host, from the slot states).

@@ -137,7 +137,12 @@ Oscillation analyseOscillation(const std::vector<double>& t, const std::vector<d
 // ---------------------------------------------------------------------------------------------
 // 1. Hanging beam (seed paper 000 §3.1): 0.1 x 0.1 x 0.6 m, rho 2500, E 3 MPa, nu 0.3, damped
 //    to its static state in 5 s. Free-end displacement of the 1D bar rho g L^2/(2E) = 1.4715 mm;
-//    the clamped lattice converges to it from above (the paper's Fig. 5: order 1 to 2).
+//    the clamped lattice converges to it from above (the paper's Fig. 5: order 1 to 2). This is
+//    the seed paper's plain lattice (VcpmSurfaceCorrection 0). With the surface correction (the
+//    default) the ratios are 0.955 (dp 0.02) and 0.972 (dp 0.01): below 1, because the 1D bar
+//    ignores the rigid clamp's lateral constraint (the lattice's clamp bonds now end at the
+//    clamp's face), which stiffens a 0.1 m wide bar near its top; the bar formula is then not
+//    the limit, so that run is not held to it here (docs/vcpm.md).
 // ---------------------------------------------------------------------------------------------
 
 namespace {
@@ -156,7 +161,10 @@ struct BeamResult {
 BeamResult runHangingBeam(double dp) {
     const std::string tag = "hb" + std::to_string(int(std::lround(dp * 1e4)));
     const std::string dir = scratch(tag);
-    const std::string kase = test::generateCaseFile(dir, "hb", caseDef("hanging_beam/HangingBeam_Def.xml"), dp);
+    // The seed paper's plain lattice (VcpmSurfaceCorrection 0; see the test below).
+    const std::string def = test::replaceOnce(test::readFile(caseDef("hanging_beam/HangingBeam_Def.xml")), "<parameters>",
+                                              "<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"0\" />");
+    const std::string kase = test::generateCase(dir, "hb", def, dp);
     const solver::SolverCase c = solver::loadSolverCase(kase);
     const std::uint32_t first = c.nfixed + c.nmoving, n = c.nsolid;
     const auto& p0 = c.particles.pos;
@@ -267,17 +275,13 @@ CantileverResult runCantilever(double dp, bool plane_stress = false, bool surfac
     const bool other_nu = std::string(nu) != "0.3975";
     const std::string dir = scratch("cl" + std::to_string(int(std::lround(dp * 1e5))) + (plane_stress ? "ps" : "") +
                                     (surface ? "sc" : "") + (other_nu ? std::string("nu") + nu : std::string()));
-    std::string kase;
-    if (plane_stress || surface || other_nu) {
-        std::string def = test::readFile(caseDef("cantilever2d/Cantilever2D_Def.xml"));
-        def = test::replaceOnce(def, "poissratio=\"0.3975\"",
-                                std::string("poissratio=\"") + nu + "\"" + (plane_stress ? " constitmodel=\"2\"" : ""));
-        if (surface)
-            def = test::replaceOnce(def, "<parameters>", "<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"1\" />");
-        kase = test::generateCase(dir, "cl", def, dp);
-    } else {
-        kase = test::generateCaseFile(dir, "cl", caseDef("cantilever2d/Cantilever2D_Def.xml"), dp);
-    }
+    std::string def = test::readFile(caseDef("cantilever2d/Cantilever2D_Def.xml"));
+    def = test::replaceOnce(def, "poissratio=\"0.3975\"",
+                            std::string("poissratio=\"") + nu + "\"" + (plane_stress ? " constitmodel=\"2\"" : ""));
+    def = test::replaceOnce(def, "<parameters>",
+                            std::string("<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"") +
+                                (surface ? "1" : "0") + "\" />");
+    const std::string kase = test::generateCase(dir, "cl", def, dp);
     const solver::SolverCase c = solver::loadSolverCase(kase);
     const std::uint32_t first = c.nfixed + c.nmoving, n = c.nsolid;
     const auto& p0 = c.particles.pos;
