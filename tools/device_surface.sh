@@ -9,9 +9,10 @@
 #  0. parity: state hashes on 1, 2 and 16 CPU threads and the GPU with the correction on;
 #  2. the hydrostatic plate (cases/hydrostatic_plate) at 4 and 8 particles through the plate:
 #     mean mid-span deflection over 0.01-0.1 s against the analytic strip 6.860e-5 m;
-#  3. liao: DualSPHysics' FlexStruc Liao 2D case as shipped (shared/dualsphysics-cases), plate
+#  3. beam: the hanging beam (cases/hanging_beam) at dp 0.02, 0.01, 0.005, plain and corrected;
+#  4. liao: DualSPHysics' FlexStruc Liao 2D case as shipped (shared/dualsphysics-cases), plate
 #     top's horizontal displacement (tools/solid_marker.py; series in $OUT/liao2d_top_sc*.csv).
-# Writes $OUT/surface.txt. Usage: tools/device_surface.sh [parity|cantilever|plate|liao]...
+# Writes $OUT/surface.txt. Usage: tools/device_surface.sh [parity|cantilever|plate|beam|liao]...
 set -uo pipefail
 parts=("$@")
 [[ ${#parts[@]} -eq 0 ]] && parts=(parity cantilever plate liao)
@@ -105,6 +106,30 @@ EOF
     done
   done
 fi
+if want beam; then
+  echo "== hanging beam (seed 000 3.1), free-end displacement / 1D bar rho g L^2/(2E) = 1.4715 mm, 5 s damped (GPU)" | tee -a "$table"
+  for sc in 0 1; do
+    sed "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+      "$root/cases/hanging_beam/HangingBeam_Def.xml" >"$work/Beam_$sc.xml"
+    for dp in 0.02 0.01 0.005; do
+      c="beam_${sc}_$dp"
+      "$bin/gencase" "$work/Beam_$sc.xml" "$work/$c" -dp:$dp >/dev/null 2>&1
+      start=$(date +%s)
+      "$bin/seaspring" -gpu -overwrite -progress:0 "$work/$c" "$work/o_$c" >"$work/$c.log" 2>&1 || tail -3 "$work/$c.log"
+      wall=$(( $(date +%s) - start ))
+      "$py" - "$work/o_$c" "$dp" "$sc" "$wall" <<'EOF' | tee -a "$table"
+import sys, glob, h5py, numpy as np
+fs = sorted(glob.glob(sys.argv[1] + '/data/part_*.h5'))
+with h5py.File(fs[0]) as f: p0 = f['pos'][:]; ty = f['type'][:]
+with h5py.File(fs[-1]) as f: p1 = f['pos'][:]
+z0 = p0[ty == 2, 2]; bot = np.abs(z0 - z0.min()) < 1e-9
+u = (p1[ty == 2, 2] - p0[ty == 2, 2])[bot].mean()
+print("  dp %s, correction %s: free end %.5e m = %.4f x the 1D bar  (%s s wall)" % (sys.argv[2], sys.argv[3], -u, -u / 1.4715e-3, sys.argv[4]))
+EOF
+    done
+  done
+fi
+
 if want liao; then
   echo "== DualSPHysics' FlexStruc Liao 2D as shipped (CaseDambreak2D_FSI_Def.xml: dp 2 mm, plate 8 mm = 4 particles," | tee -a "$table"
   echo "   nu 0.49, plane strain, TimeMax 1 s): plate top (0.6, 0, 0.09) horizontal displacement (GPU)" | tee -a "$table"
