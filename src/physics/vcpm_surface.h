@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -26,6 +27,22 @@
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
+
+/// The complete lattice stencil of `dim` (6 + 12 offsets in 3D, 4 + 4 in the 2D x-z plane), in
+/// units of dp, and whether each is a second neighbour (the bulk site of the surface correction
+/// and of its sub-step bound).
+inline void latticeStencil(int dim, std::vector<Double3>& offsets, std::vector<std::uint8_t>& second) {
+    offsets.clear();
+    second.clear();
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int k = -1; k <= 1; ++k) {
+                const int nz = (i != 0) + (j != 0) + (k != 0);
+                if (nz == 0 || nz == 3 || (dim == 2 && j != 0)) continue;
+                offsets.push_back(Double3{double(i), double(j), double(k)});
+                second.push_back(nz == 2);
+            }
+}
 
 /// Spring and volumetric energy of a site under the uniaxial-stress strain along axis d
 /// (lateral strain -nu_l on the other axes; `dim` 2: the lattice's x-z plane) of bonds with

@@ -230,14 +230,7 @@ void surfaceCorrection(SolidSetup& s) {
     // The bulk energies per body and axis, from the full stencil at the lattice spacing.
     std::vector<physics::Double3> stencil;
     std::vector<std::uint8_t> second;
-    for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j)
-            for (int k = -1; k <= 1; ++k) {
-                const int nz = (i != 0) + (j != 0) + (k != 0);
-                if (nz == 0 || nz == 3 || (dim == 2 && j != 0)) continue;
-                stencil.push_back(physics::Double3{double(i), double(j), double(k)});
-                second.push_back(nz == 2);
-            }
+    physics::latticeStencil(dim, stencil, second);
     const double dp = s.rest.empty() ? 1.0 : [&] {
         for (std::size_t k = 0; k < s.rest.size(); ++k)
             if (!(s.flags[k] & physics::kBondSecond) && s.rest[k] > 0) return s.rest[k];

@@ -79,15 +79,8 @@ std::vector<double> correctedSubStepScales(const SolidSetup& s) {
     // Per body: the largest row against the plain bulk site's (the stencil, unit vectors).
     std::vector<physics::Double3> stencil;
     std::vector<std::uint8_t> second;
-    for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j)
-            for (int k = -1; k <= 1; ++k) {
-                const int nz = (i != 0) + (j != 0) + (k != 0);
-                if (nz == 0 || nz == 3 || (s.dim == 2 && j != 0)) continue;
-                const double l = std::sqrt(double(nz));
-                stencil.push_back(physics::Double3{i / l, j / l, k / l});
-                second.push_back(nz == 2);
-            }
+    physics::latticeStencil(s.dim, stencil, second);
+    for (physics::Double3& u : stencil) u = unit(physics::Double3{0, 0, 0}, u);
     std::vector<double> scales(s.materials.size(), 1.0), rmax(s.materials.size(), 0.0);
     for (std::uint32_t r = 0; r < n; ++r)
         for (int c = 0; c < 3; ++c) rmax[s.body[r]] = std::max(rmax[s.body[r]], row[3 * std::size_t(r) + c]);

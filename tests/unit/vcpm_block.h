@@ -6,6 +6,7 @@
 ///        test_vcpm_surface.cpp.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -157,6 +158,25 @@ inline std::vector<Double3> affine(const Block& b, const Mat3& e, double scale, 
         x[s] = y;
     }
     return x;
+}
+
+/// max |F + dU/dx| / max |F| at positions x, F from the passes of vcpm.h (forces), dU/dx by
+/// central differences of the independent energy (step 1e-5 dp).
+inline double forceEnergyMismatch(Block& b, const std::vector<Double3>& x) {
+    std::vector<Double3> f = forces(b, x);
+    double fmax = 0.0, err = 0.0;
+    for (Double3 v : f) fmax = std::max(fmax, norm(v));
+    const double h = 1e-5 * b.dp;
+    for (std::uint32_t s = 0; s < b.n; ++s)
+        for (int c = 0; c < 3; ++c) {
+            if (b.two_d && c == 1) continue;
+            std::vector<Double3> xp = x, xm = x;
+            comp(xp[s], c) += h;
+            comp(xm[s], c) -= h;
+            const double g = -(energy(b, xp) - energy(b, xm)) / (2 * h);
+            err = std::max(err, std::fabs(comp(f[s], c) - g));
+        }
+    return err / fmax;
 }
 
 }  // namespace seaspring::test
