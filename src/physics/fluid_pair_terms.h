@@ -30,6 +30,9 @@ struct InteractionInputs {
     /// Per cell: kNearBound / kNearFluid, a boundary / fluid particle in its search box
     /// (cellOccupiedAt, dilateCellsAt); null: visit always.
     const std::uint8_t* near = nullptr;
+    /// mDBC SlipMode 2/3 (null otherwise): per boundary particle, the velocity its viscous
+    /// terms use (the tangential ghost velocity, mdbc.h); its velrho keeps the wall's.
+    const Float4* bound_visc_vel = nullptr;
 };
 
 /// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.
@@ -94,17 +97,25 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const float dot_vf = fma32(dvx, t.frx, fma32(dvy, t.fry, dvz * t.frz));
     t.ar = dot_vf * (ovrhob * (massb * va.w));  // massb * rho_a: per particle
 
-    // Viscous time-step measure and viscosity.
-    const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+    // Viscous time-step measure and viscosity: against an mDBC SlipMode 2/3 boundary particle,
+    // its viscous velocity (DualSPHysics' tangenvel), the wall's in the continuity term above.
+    float wvx = dvx, wvy = dvy, wvz = dvz;
+    if (kBound && in.bound_visc_vel) {
+        const Float4 vv = in.bound_visc_vel[j];
+        wvx = va.x - vv.x;
+        wvy = va.y - vv.y;
+        wvz = va.z - vv.z;
+    }
+    const float dot_vr = fma32(drx, wvx, fma32(dry, wvy, drz * wvz));
     const float dot3 = fma32(drx, t.frx, fma32(dry, t.fry, drz * t.frz));  // r . grad W
     t.visc = viscDtPair(dot_vr, ov_r2eta);
     if (Opt::visco == Viscosity::Artificial) {
         t.cf -= artificialViscosityFactor(t.visc, ov_rhosum, massb, visco, c.cs0, c.ker.h);
     } else {
         t.cv = laminarViscosityFactor(dot3, ov_r2eta, ov_rhosum, massb, visco);
-        t.dvx = dvx;
-        t.dvy = dvy;
-        t.dvz = dvz;
+        t.dvx = wvx;
+        t.dvy = wvy;
+        t.dvz = wvz;
         if (Opt::sps) {
             SymTensor ts = taua;
             if (!kBound) {

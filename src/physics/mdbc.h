@@ -22,11 +22,15 @@
 ///    number dp^2 |A|inf |A^-1|inf <= 50, else Shepard (at least rho0 when A11 < 0.1); the
 ///    pressure is cloned to the particle with the hydrostatic jump of the wall-normal distance,
 ///      p_b = c0^2 (rho_g - rho0) + rho0 (g - a_wall) . n^ ((x_b - g) . n^),  rho_b = rho0 + p_b / c0^2,
-///    and the velocity is the ghost node's Shepard velocity v_g mirrored: v_b = 2 v_wall - v_g
-///    (no-slip), or for free-slip v_g's tangential part with its normal part mirrored,
-///    v_b.n = 2 v_wall.n - v_g.n. (DualSPHysics copies the whole v_g for free-slip; then a fluid
-///    particle approaching the wall sees no relative normal velocity, its density does not rise
-///    and it sinks through the wall: tests/solver/test_mdbc_solver.cpp's still tank did.)
+///    and, as DualSPHysics 5.4 does, the particle carries two velocities: the wall's own motion
+///    velocity (in velrho: the continuity equation and everything else see the wall), and for
+///    the viscous terms alone the tangential part of v_2 = 2 v_wall - v_g (no-slip) or v_2 = v_g
+///    (free-slip), v_g the ghost node's Shepard velocity (DualSPHysics' `tangenvel`;
+///    MdbcInputs::visc_vel, InteractionInputs::bound_visc_vel). An earlier version put the
+///    whole mirrored velocity in velrho, so the continuity equation saw it too: the 3D still tank
+///    with no-slip walls then drifted (its lowest row's pressure 0.977 of hydrostatic at 1 s) and
+///    diverged by 3 s, and free-slip had to mirror the normal velocity to keep the water from
+///    sinking through the floor (docs/validation.md).
 /// Sums run in float in the neighbour order of the force loops (forEachCandidateRow), the
 /// matrix is inverted in double with plain IEEE operations: the same bits on both backends.
 #pragma once
@@ -163,9 +167,19 @@ SEASPRING_HD inline double mdbcInfNorm(const T (&a)[4][4]) {
 /// What the mDBC correction sets on a boundary particle.
 struct MdbcResult {
     float rho;
-    float vx, vy, vz;
-    bool set_velocity;  ///< SlipMode 2/3: the velocity too
+    float vx, vy, vz;     ///< the wall's velocity (velrho)
+    float tvx, tvy, tvz;  ///< SlipMode 2/3: the velocity of the viscous terms (tangential)
+    bool set_velocity;    ///< SlipMode 2/3: the velocities too
 };
+
+/// The tangential part of (vx, vy, vz) for the unit normal (ux, uy, uz).
+SEASPRING_HD inline void mdbcTangential(float vx, float vy, float vz, float ux, float uy, float uz, float& tx,
+                                        float& ty, float& tz) {
+    const float vn = vx * ux + vy * uy + vz * uz;
+    tx = vx - vn * ux;
+    ty = vy - vn * uy;
+    tz = vz - vn * uz;
+}
 
 /// The density (and velocity) of a boundary particle with ghost vector (nx, ny, nz) from the
 /// sums at its ghost node. (wx, wy, wz): the wall's own velocity, (ax, ay, az) its acceleration.
@@ -176,7 +190,7 @@ SEASPRING_HD inline MdbcResult mdbcCorrect(const MdbcSums& s, SlipMode slip, flo
     constexpr int n = kDim + 1;
     const float rho0 = c.rhop0;
     const float a11 = s.a[0][0];
-    MdbcResult out{rho0, wx, wy, wz, slip != SlipMode::Vel0};
+    MdbcResult out{rho0, wx, wy, wz, wx, wy, wz, slip != SlipMode::Vel0};
     if (slip == SlipMode::Vel0) {
         if (!(a11 > 0.f) || a11 < m.threshold) return out;
         double inv[4][4], det;
@@ -196,7 +210,13 @@ SEASPRING_HD inline MdbcResult mdbcCorrect(const MdbcSums& s, SlipMode slip, flo
         }
         return out;
     }
-    if (!(s.submerged > 0.f)) return out;  // a dry ghost node: rho0 and the wall velocity
+    // The unit normal (the ghost vector's direction).
+    const float len = sqrtf(nx * nx + ny * ny + nz * nz);
+    const float ux = nx / len, uy = ny / len, uz = nz / len;
+    if (!(s.submerged > 0.f)) {  // a dry ghost node: rho0, the wall velocity (its tangential part for viscosity)
+        mdbcTangential(wx, wy, wz, ux, uy, uz, out.tvx, out.tvy, out.tvz);
+        return out;
+    }
     float rhog;
     if (a11 < kMdbcMinKernelSum) {
         const float shep = float(double(s.rho) / double(a11));
@@ -215,8 +235,6 @@ SEASPRING_HD inline MdbcResult mdbcCorrect(const MdbcSums& s, SlipMode slip, flo
         }
     }
     // Pressure cloning along the unit normal: (x_b - g) . n^ = -|n|.
-    const float len = sqrtf(nx * nx + ny * ny + nz * nz);
-    const float ux = nx / len, uy = ny / len, uz = nz / len;
     const float normpos = -nx * ux - ny * uy - nz * uz;
     const float normforce = rho0 * ((m.gx - ax) * ux + (m.gy - ay) * uy + (m.gz - az) * uz);
     const float pressure = m.cs02 * (rhog - rho0) + normforce * normpos;
@@ -224,24 +242,17 @@ SEASPRING_HD inline MdbcResult mdbcCorrect(const MdbcSums& s, SlipMode slip, flo
     const float gvx = float(double(s.vx) / double(a11));
     const float gvy = kDim == 3 ? float(double(s.vy) / double(a11)) : 0.f;
     const float gvz = float(double(s.vz) / double(a11));
-    if (slip == SlipMode::NoSlip) {
-        out.vx = wx + wx - gvx;
-        out.vy = wy + wy - gvy;
-        out.vz = wz + wz - gvz;
-    } else {  // free-slip: the ghost's tangential velocity, its normal one mirrored about the wall's
-        const float gn = gvx * ux + gvy * uy + gvz * uz;
-        const float wn = wx * ux + wy * uy + wz * uz;
-        const float dn = (wn + wn - gn) - gn;
-        out.vx = gvx + dn * ux;
-        out.vy = gvy + dn * uy;
-        out.vz = gvz + dn * uz;
-    }
+    if (slip == SlipMode::NoSlip)  // v_2 = 2 v_wall - v_g
+        mdbcTangential(wx + wx - gvx, wy + wy - gvy, wz + wz - gvz, ux, uy, uz, out.tvx, out.tvy, out.tvz);
+    else  // free-slip: v_2 = v_g
+        mdbcTangential(gvx, gvy, gvz, ux, uy, uz, out.tvx, out.tvy, out.tvz);
     return out;
 }
 
 /// The inputs of the mDBC pass over the boundary block.
 struct MdbcInputs {
     const Float4* normal0 = nullptr;  ///< per boundary id: the ghost vector at t = 0 (w unused)
+    Float4* visc_vel = nullptr;       ///< SlipMode 2/3: per boundary particle (sorted), the viscous terms' velocity
     std::uint32_t first_moving = 0, nmoving = 0;
     const Double3* moving_pos0 = nullptr;          ///< per moving particle: initial position
     const std::uint16_t* moving_object = nullptr;  ///< per moving particle: its motion
@@ -260,14 +271,21 @@ struct MdbcInputs {
 /// Boundary particle i (sorted index): its ghost vector now (a moving boundary rotates its
 /// initial one with its pose, a solid particle's follows the lattice's deformation), its wall
 /// velocity (0, the motion's over the coming interval as motionAt, or the solid's), the sums at
-/// the ghost node and the correction. Particles without a ghost
-/// vector keep DBC. The wall acceleration of the pressure cloning is taken as 0.
+/// the ghost node and the correction. Particles without a ghost vector keep DBC (with SlipMode
+/// 2/3 their own velocity is their viscous velocity). The wall acceleration of the pressure
+/// cloning is taken as 0.
 template <class Kernel, int kDim>
 SEASPRING_HD inline void mdbcBoundaryAt(std::uint32_t i, const ParticleView& v, const MdbcInputs& in, SlipMode slip,
                                         const FluidConstants& c, const MdbcConstants& m, const CellGrid& g) {
     const std::uint32_t id = v.id[i];
     const Float4 n0 = in.normal0[id];
-    if (n0.x == 0.f && n0.y == 0.f && n0.z == 0.f) return;
+    if (n0.x == 0.f && n0.y == 0.f && n0.z == 0.f) {  // DBC: its own velocity in the viscous terms too
+        if (in.visc_vel) {
+            const Float4 vr = v.velrho[i];
+            in.visc_vel[i] = Float4{vr.x, vr.y, vr.z, 0.f};
+        }
+        return;
+    }
     Double3 n{double(n0.x), double(n0.y), double(n0.z)};
     float wx = 0.f, wy = 0.f, wz = 0.f;
     const std::uint32_t k = id - in.first_moving;
@@ -302,8 +320,12 @@ SEASPRING_HD inline void mdbcBoundaryAt(std::uint32_t i, const ParticleView& v, 
         s = mdbcGhostSums<Kernel, kDim>(gpc, in.cell_start_fluid, v.poscell, v.velrho, c, g);
     const MdbcResult res =
         mdbcCorrect<kDim>(s, slip, float(n.x), float(n.y), float(n.z), wx, wy, wz, 0.f, 0.f, 0.f, c, m);
-    if (res.set_velocity) v.velrho[i] = Float4{res.vx, res.vy, res.vz, res.rho};
-    else v.velrho[i].w = res.rho;
+    if (res.set_velocity) {
+        v.velrho[i] = Float4{res.vx, res.vy, res.vz, res.rho};
+        in.visc_vel[i] = Float4{res.tvx, res.tvy, res.tvz, 0.f};
+    } else {
+        v.velrho[i].w = res.rho;
+    }
 }
 
 }  // namespace seaspring::physics

@@ -73,6 +73,8 @@ public:
         if (!s.solid.empty()) solid_.init(s.solid);
         if (s.mdbc.enabled) {
             assignFrom(mdbc_normal0_, s.mdbc.normal0);
+            if (s.mdbc.slip != physics::SlipMode::Vel0)
+                assignFrom(mdbc_visc_vel_, std::vector<physics::Float4>(nbound_ > 0 ? nbound_ : 1, physics::Float4{0, 0, 0, 0}));
             if (solid_.n > 0) assignFrom(mdbc_solid_pos0_, s.solid.pos);
         }
         sortRange(0, nbound_, cs_bound_, true);
@@ -322,6 +324,7 @@ private:
         a.in.tau = a.v.tau;  // null without SPS
         a.in.press_ovrho = a.v.press_ovrho;
         a.in.near = near_.data();
+        a.in.bound_visc_vel = mdbc_visc_vel_.empty() ? nullptr : mdbc_visc_vel_.data();
         a.c = setup_.fluid;
         a.g = setup_.grid;
         a.nbound = nbound_;
@@ -333,6 +336,7 @@ private:
     void mdbc(const ForceArgs& a) {
         physics::MdbcInputs in;
         in.normal0 = mdbc_normal0_.data();
+        in.visc_vel = mdbc_visc_vel_.empty() ? nullptr : mdbc_visc_vel_.data();
         in.first_moving = setup_.first_moving;
         in.nmoving = setup_.nmoving;
         in.moving_pos0 = moving_pos0_.data();
@@ -501,6 +505,7 @@ private:
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
     Buf<physics::Double3> moving_pos0_;
     Buf<physics::Float4> mdbc_normal0_;      ///< mDBC only: per boundary id
+    Buf<physics::Float4> mdbc_visc_vel_;     ///< mDBC SlipMode 2/3: per boundary particle (sorted), the viscous velocity
     Buf<physics::Double3> mdbc_solid_pos0_;  ///< mDBC with solids: their initial positions
     Buf<std::uint16_t> moving_object_;
     Buf<physics::RigidMotionGpu> motions_, solid_motions_;

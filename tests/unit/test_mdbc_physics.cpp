@@ -154,9 +154,12 @@ TEST(MdbcPhysics, SlipModes2And3CloneTheHydrostaticPressure) {
                 const MdbcResult r = dim == 2 ? f.correct<2>(xb, n, slip) : f.correct<3>(xb, n, slip);
                 EXPECT_TRUE(r.set_velocity);
                 EXPECT_NEAR(r.rho, rho(xb.z), 2e-5 * 1000.0) << dim << "D layer " << layer;
-                // The fluid moves at 0.1 m/s along x: no-slip mirrors it, free-slip copies it.
-                EXPECT_NEAR(r.vx, slip == SlipMode::NoSlip ? -0.1f : 0.1f, 1e-4) << dim << "D layer " << layer;
-                EXPECT_NEAR(r.vz, 0.f, 1e-5);
+                // The fluid moves at 0.1 m/s along x: the viscous velocity mirrors it (no-slip) or
+                // copies it (free-slip); velrho keeps the wall's (at rest).
+                EXPECT_NEAR(r.tvx, slip == SlipMode::NoSlip ? -0.1f : 0.1f, 1e-4) << dim << "D layer " << layer;
+                EXPECT_NEAR(r.tvz, 0.f, 1e-5);
+                EXPECT_EQ(r.vx, 0.f);
+                EXPECT_EQ(r.vz, 0.f);
             }
         }
     }
@@ -165,21 +168,35 @@ TEST(MdbcPhysics, SlipModes2And3CloneTheHydrostaticPressure) {
 TEST(MdbcPhysics, NoSlipMirrorsAboutTheWallVelocity) {
     FluidLattice f(2, [](const Double3&) { return Float4{0.1f, 0.f, 0.f, 1000.f}; });
     const MdbcResult r = f.correct<2>({0.0, 0.0, -0.005}, {0.0, 0.0, 0.01}, SlipMode::NoSlip, 0.5f);
-    EXPECT_NEAR(r.vx, 2 * 0.5f - 0.1f, 1e-4);  // v_b = 2 v_wall - v_ghost
+    EXPECT_NEAR(r.tvx, 2 * 0.5f - 0.1f, 1e-4);  // viscous velocity: 2 v_wall - v_ghost
+    EXPECT_EQ(r.vx, 0.5f);                      // the continuity equation sees the wall
 }
 
-/// Free-slip keeps the tangential velocity and mirrors the normal one (the wall stays
-/// impermeable); no-slip mirrors both.
-TEST(MdbcPhysics, FreeSlipMirrorsOnlyTheNormalVelocity) {
+/// As DualSPHysics 5.4 (tangenvel): the viscous velocity is the tangential part of 2 v_wall -
+/// v_g (no-slip) or of v_g (free-slip); its normal part is 0, and velrho keeps the wall's own
+/// velocity, so a fluid particle approaching the wall sees its whole normal velocity in the
+/// continuity equation (with no-slip and free-slip alike; this is what keeps the still tank's
+/// water above the floor). Broken on purpose: the whole mirrored velocity in velrho (the
+/// earlier scheme) fails the vx/vz checks here, and the 3D still tank with no-slip walls
+/// drifted and diverged (docs/validation.md, "Still-water tanks").
+TEST(MdbcPhysics, SlipModes2And3KeepTheWallVelocityAndAViscousTangentialOne) {
     FluidLattice f(3, [](const Double3&) { return Float4{0.1f, 0.02f, -0.05f, 1000.f}; });
     const MdbcResult fs = f.correct<3>({0.0, 0.0, -0.005}, {0.0, 0.0, 0.01}, SlipMode::FreeSlip);
-    EXPECT_NEAR(fs.vx, 0.1f, 1e-5);
-    EXPECT_NEAR(fs.vy, 0.02f, 1e-5);
-    EXPECT_NEAR(fs.vz, 0.05f, 1e-5);
+    EXPECT_NEAR(fs.tvx, 0.1f, 1e-5);
+    EXPECT_NEAR(fs.tvy, 0.02f, 1e-5);
+    EXPECT_EQ(fs.tvz, 0.f);
     const MdbcResult ns = f.correct<3>({0.0, 0.0, -0.005}, {0.0, 0.0, 0.01}, SlipMode::NoSlip);
-    EXPECT_NEAR(ns.vx, -0.1f, 1e-5);
-    EXPECT_NEAR(ns.vy, -0.02f, 1e-5);
-    EXPECT_NEAR(ns.vz, 0.05f, 1e-5);
+    EXPECT_NEAR(ns.tvx, -0.1f, 1e-5);
+    EXPECT_NEAR(ns.tvy, -0.02f, 1e-5);
+    EXPECT_EQ(ns.tvz, 0.f);
+    for (const MdbcResult& r : {fs, ns}) {
+        EXPECT_EQ(r.vx, 0.f);
+        EXPECT_EQ(r.vy, 0.f);
+        EXPECT_EQ(r.vz, 0.f);
+    }
+    // An oblique wall (normal (1, 0, 1)/sqrt2): the normal part of the viscous velocity is 0.
+    const MdbcResult ob = f.correct<3>({0.0, 0.0, -0.005}, {0.00707, 0.0, 0.00707}, SlipMode::FreeSlip);
+    EXPECT_NEAR(ob.tvx * 0.7071f + ob.tvz * 0.7071f, 0.f, 1e-6);
 }
 
 TEST(MdbcPhysics, AGhostNodeWithoutFluidGivesRho0AndTheWallVelocity) {
@@ -189,6 +206,7 @@ TEST(MdbcPhysics, AGhostNodeWithoutFluidGivesRho0AndTheWallVelocity) {
         const MdbcResult r = f.correct<2>({0.0, 0.0, -0.04}, {0.0, 0.0, -0.01}, slip, 0.25f);
         EXPECT_EQ(r.rho, 1000.f);
         EXPECT_EQ(r.vx, 0.25f);
+        EXPECT_EQ(r.tvx, 0.25f);  // tangential to the wall (normal along z)
     }
 }
 
