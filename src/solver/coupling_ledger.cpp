@@ -55,7 +55,8 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
         }
         const physics::Double3 p = st.pos[id];
         r.potential -= m * (g.x * (p.x - pos0[id].x) + g.y * (p.y - pos0[id].y) + g.z * (p.z - pos0[id].z));
-        // U = sum_I [1/2 sum_J k dl^2 + 1/2 T (sum_J dl)^2] over intact bonds (each seen from I; vcpm.h).
+        // U = sum_I [1/2 sum_J k dl^2 + 1/2 T (sum_J w dl)^2] over intact bonds (each seen from I; vcpm.h;
+        // k with the surface correction's factor, w its volumetric weight, 1 without it).
         const physics::VcpmMaterial& mat = so.materials[so.body[s]];
         double sum = 0, springs = 0;
         for (int q = 0; q < so.count[s]; ++q) {

@@ -1,6 +1,6 @@
 // SeaSpring — MIT licence.
 /// \file test_vcpm_physics.cpp
-/// \brief VCPM lattice physics (physics/vcpm.h) on small lattice blocks built here from
+/// \brief VCPM lattice physics (physics/vcpm.h) on small lattice blocks (tests/unit/vcpm_block.h) built from
 ///        gencase's lattice offsets: patch tests (3D and 2D recover E, nu and mu of the input),
 ///        rigid motion, force = -dU/dx, breakage, the sub-step integrator, the sub-step count,
 ///        the material constants, and the output formulas (lattice energy as the coupling ledger
