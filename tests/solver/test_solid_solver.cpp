@@ -11,12 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "solver/solid_setup.h"
+#include "solver/solid_stability.h"
 #include "solver/solver_case.h"
 #include "solver_test_util.h"
 
@@ -397,6 +399,36 @@ TEST(SolidSolver, SurfaceCorrectionFactorsAreSymmetricAndOneInside) {
     std::printf("surface correction: top-row bond factor %.4f\n", g_top);
     EXPECT_GT(g_top, 1.1);
     EXPECT_LT(g_top, 2.0);
+}
+
+// The corrected lattice's sub-step (solver::correctedSubStepScales): a beam 4 particles thick
+// at nu 0.49 (its surface sites stiffened by the weights and springs, its clamp bonds doubled)
+// gets a factor below 1 (measured 0.702) and exactly the scaled elastic sub-step; the plain
+// lattice keeps 1. A lattice made stiffer (every spring factor x 4) needs a smaller factor
+// (measured 0.654: at nu 0.49 the volumetric term dominates the bound). Broken on
+// purpose (the factor forced to 1), the Antoci gate at its coarse resolution blows up at
+// t = 0.2 s in validation_coarse (docs/vcpm.md).
+TEST(SolidSolver, SurfaceCorrectionScalesTheSubStepToTheStiffestSite) {
+    std::string def = test::readFile(caseDef("cantilever2d/Cantilever2D_Def.xml"));
+    def = test::replaceOnce(def, "poissratio=\"0.3975\"", "poissratio=\"0.49\"");
+    const solver::SolidSetup plain = solver::makeSolidSetup(solver::loadSolverCase(test::generateCase(
+        scratch("dtscale0"), "cl",
+        test::replaceOnce(def, "<parameters>", "<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"0\" />"),
+        0.005)));
+    solver::SolidSetup s = solver::makeSolidSetup(solver::loadSolverCase(test::generateCase(scratch("dtscale1"), "cl", def, 0.005)));
+    ASSERT_EQ(plain.dt_scale.size(), 1u);
+    ASSERT_EQ(s.dt_scale.size(), 1u);
+    EXPECT_EQ(plain.dt_scale[0], 1.0);
+    EXPECT_EQ(plain.dt, plain.elastic_dt[0]);
+    const double f = s.dt_scale[0];
+    std::printf("corrected sub-step factor, nu 0.49, 4 particles thick: %.4f\n", f);
+    EXPECT_GT(f, 0.3);
+    EXPECT_LT(f, 1.0);
+    EXPECT_EQ(s.dt, s.elastic_dt[0] * f);
+    for (double& k : s.kfac) k *= 4.0;
+    const double f4 = solver::correctedSubStepScales(s)[0];
+    std::printf("with every spring x 4: %.4f\n", f4);
+    EXPECT_LT(f4, f);
 }
 
 // The surface correction (VcpmSurfaceCorrection 1, physics/vcpm_surface.h: spring factors,
