@@ -16,7 +16,6 @@
 #include <type_traits>
 
 #include "physics/fluid_pair_terms.h"
-#include "physics/neighbour_list.h"
 
 namespace seaspring::physics {
 
@@ -104,31 +103,11 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
     if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
 }
 
-/// The fluid-block pairs of fluid particle `i` from its neighbour list (neighbour_list.h): the
-/// entries in list order (the row walk's), each through the exact test: the row walk's sums.
-template <class Opt>
-SEASPRING_HD inline void fluidPairsFromList(std::uint32_t i, const NeighbourList& l, const Float4& psa,
-                                            const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
-                                            const InteractionInputs& in, const FluidConstants& c,
-                                            const CellGrid& g, FluidAccum& acc) {
-    const std::uint32_t k = i - l.first, n = l.count[k];
-    const std::uint32_t* nb = l.nb + k;
-    for (std::uint32_t e = 0; e < n; ++e) {
-        const std::uint32_t j = nb[std::size_t(e) * l.stride];
-        float drx, dry, drz;
-        const float rr2 = listedPairOffset<Opt::dim>(psa, in.poscell[j], g, drx, dry, drz);
-        if (!isNeighbour(rr2, c)) continue;
-        fluidPair<Opt, false>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
-    }
-}
-
 /// Force evaluation of fluid particle `i`: fluid neighbours, then boundary neighbours.
-/// kCompact: see PairBatch (the host sets it; same results). kListed: the fluid neighbours from
-/// the neighbour list `list` (same results).
-template <class Opt, bool kCompact = false, bool kListed = false>
+/// kCompact: see PairBatch (the host sets it; same results).
+template <class Opt, bool kCompact = false>
 SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const InteractionInputs& in,
-                                                   const FluidConstants& c, const CellGrid& g,
-                                                   const NeighbourList& list = NeighbourList{}) {
+                                                   const FluidConstants& c, const CellGrid& g) {
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
     const Float2 pa2 = in.press_ovrho[i];
@@ -136,10 +115,7 @@ SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const Intera
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
     FluidAccum acc;
-    if constexpr (kListed)
-        fluidPairsFromList<Opt>(i, list, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
-    else
-        fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
+    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
     if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
         fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
     if (Opt::ddt != DensityDiffusion::None && !acc.ddt_off) acc.ar += acc.delta;

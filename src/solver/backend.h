@@ -58,9 +58,6 @@ struct BackendSetup {
     std::uint32_t motion_objects = 0;
     SolidSetup solid;                             ///< VCPM solids (empty when none)
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
-    /// -nlist: the fluid particles' neighbour list skin, a fraction of the cell size (0: no
-    /// list, the row walk). Same results either way (physics/neighbour_list.h).
-    double list_skin = 0;
 };
 
 /// State copied back to the host, in id order: the particle fields flagged physics::kHost or
@@ -104,7 +101,6 @@ inline std::vector<std::uint32_t> gaugeSlotsOfIds(const std::vector<std::uint32_
 /// Backend::divideCounts.
 struct DivideCounts {
     std::uint64_t divides = 0, sorts = 0;
-    std::uint64_t list_builds = 0;  ///< neighbour list builds (-nlist)
 };
 
 class Backend {

@@ -23,7 +23,6 @@
 #include "solver/backend.h"
 #include "solver/force_passes.h"
 #include "solver/launch.h"
-#include "solver/neighbour_list_store.h"
 #include "solver/particle_passes.h"
 #include "solver/particle_store.h"
 #include "solver/solid_arrays.h"
@@ -71,7 +70,6 @@ public:
         assignFrom(moving_object_, s.moving_object);
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
         exec_.prepareSort(np);
-        list_.init(s);
         if (!s.solid.empty()) solid_.init(s.solid);
         if (s.mdbc.enabled) {
             assignFrom(mdbc_normal0_, s.mdbc.normal0);
@@ -89,13 +87,8 @@ public:
         if (sorted_ && setup_.grid.skinf > 0.f) {
             // Only moving boundaries and solids move in the boundary block.
             const std::uint32_t b = setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_;
-            const std::uint32_t due = exec_.reduce(
-                b, nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid, list_.staleTest(setup_.fluid)},
-                OrCombine{});
-            if ((due & kSortDue) == 0u) {
-                if ((due & kListStale) != 0u || !list_.valid) buildList();
+            if (exec_.reduce(b, nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid}, OrCombine{}) == 0u)
                 return;
-            }
         }
         ++counts_.sorts;
         sorted_ = true;
@@ -110,8 +103,6 @@ public:
         nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
         nearFlags(cs_fluid_, physics::kNearFluid);
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
-        list_.valid = false;
-        buildList();
     }
 
     void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) override {
@@ -229,11 +220,7 @@ public:
         copyToHost(gauge_positions_, out.positions);
     }
 
-    DivideCounts divideCounts() const override {
-        DivideCounts c = counts_;
-        c.list_builds = list_.builds;
-        return c;
-    }
+    DivideCounts divideCounts() const override { return counts_; }
     std::uint32_t activeFluid() const override { return nfluid_; }
     void synchronize() override { exec_.synchronize(); }
 
@@ -310,7 +297,6 @@ public:
         sorted_ = in.integer("engine/sorted") != 0;
         counts_.divides = (unsigned long long)in.integer("engine/divides");
         counts_.sorts = (unsigned long long)in.integer("engine/sorts");
-        list_.valid = false;  // built again at the next divide (same results: neighbour_list.h)
     }
 
 private:
@@ -343,14 +329,7 @@ private:
         a.g = setup_.grid;
         a.nbound = nbound_;
         a.np = nbound_ + nfluid_;
-        if (list_.valid) a.list = list_.view(setup_.fluid);
         return a;
-    }
-
-    /// The fluid particles' neighbour lists from the sorted fluid block (-nlist only).
-    void buildList() {
-        list_.build(exec_, p_.poscell.data(), cs_fluid_.data(), setup_.fluid, setup_.grid, setup_.physics.dim,
-                    nfluid_);
     }
 
     /// mDBC: boundary densities (and velocities) from their ghost nodes.
@@ -531,7 +510,6 @@ private:
     Buf<std::uint16_t> moving_object_;
     Buf<physics::RigidMotionGpu> motions_, solid_motions_;
     SolidArrays<Exec::template Buffer> solid_;
-    NeighbourListStore<Exec::template Buffer> list_;
     Buf<physics::Float4> gauge_points_;
     Buf<physics::MaxzRow> gauge_rows_;
     Buf<physics::GaugeSample> gauge_samples_;

@@ -14,7 +14,6 @@
 #include "physics/fluid_constants.h"
 #include "physics/fluid_pair_terms.h"
 #include "physics/mdbc.h"
-#include "physics/neighbour_list.h"
 #include "physics/particle_updates.h"
 #include "solver/backend.h"
 
@@ -32,8 +31,6 @@ struct ForceArgs {
     const std::uint32_t* hydro_slot = nullptr;
     std::uint32_t nhydro = 0;
     physics::Double3* hydro_out = nullptr;
-    /// The fluid particles' neighbour list (-nlist; list.nb null: the row walk).
-    physics::NeighbourList list;
 };
 
 template <class Exec, class Kernel, int kDim>

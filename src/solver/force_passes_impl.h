@@ -12,13 +12,12 @@
 
 namespace seaspring::solver {
 
-/// Fluid particle i: all its pairs (kCompact: the host's batched form; kListed: the fluid
-/// neighbours from the neighbour list; same bits).
-template <class Opt, bool kCompact, bool kListed = false>
+/// Fluid particle i: all its pairs (kCompact: the host's batched form, same bits).
+template <class Opt, bool kCompact>
 struct FluidForcesPass {
     ForceArgs a;
     SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
-        const physics::FluidAccum acc = physics::fluidParticleForces<Opt, kCompact, kListed>(i, a.in, a.c, a.g, a.list);
+        const physics::FluidAccum acc = physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g);
         a.v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
         a.v.visc[i] = acc.visc;
         if (Opt::sps) a.v.gradvel[i] = acc.gradvel;
@@ -121,8 +120,9 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     // (each writes its own particles' acear and visc; both read the pressure pass's results). On
     // the CPU the threads that finish their share of the (uneven) boundary loop go on to the fluid.
     using BoundOpt = FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>;
-    auto run = [&](auto opt, auto fluid) {
+    dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
         using Opt = decltype(opt);
+        const FluidForcesPass<Opt, kCompact> fluid{a};
         const BoundForcesPass<BoundOpt, kCompact> bound{a};
         if (a.nhydro == 0) {
             exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, a.nbound, a.np,
@@ -134,11 +134,6 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
             exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound + a.nhydro, both,
                                                                                  a.nbound, a.np, fluid);
         }
-    };
-    dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
-        using Opt = decltype(opt);
-        if (a.list.nb != nullptr) run(opt, FluidForcesPass<Opt, kCompact, true>{a});
-        else run(opt, FluidForcesPass<Opt, kCompact>{a});
     });
 }
 

@@ -11,7 +11,6 @@
 #include "physics/cell_grid.h"
 #include "physics/fluid_pair_terms.h"
 #include "physics/gauges.h"
-#include "physics/neighbour_list.h"
 #include "physics/particle_updates.h"
 #include "physics/time_integration.h"
 
@@ -95,43 +94,12 @@ struct PosCellPass {
     SEASPRING_HD void operator()(std::uint32_t i) const { physics::posCellAt(i, v, g); }
 };
 
-/// Between two sorts: refreshes particle i's PosCell in its cell; bit kSortDue when a sort is
-/// due, bit kListStale when fluid particle i has moved too far for the neighbour list (when
-/// there is one) (reduced with OrCombine; each index is visited once).
-constexpr std::uint32_t kSortDue = 1u, kListStale = 2u;
+/// Between two sorts: refreshes particle i's PosCell in its cell; 1 when a sort is due
+/// (reduced with OrCombine; each index is visited once).
 struct RefreshPosCellPass {
     physics::ParticleView v;
     physics::CellGrid g;
-    physics::NeighbourList list;
-    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const {
-        std::uint32_t r = physics::refreshPosCellAt(i, v, g) != 0u ? kSortDue : 0u;
-        if (list.nb != nullptr && i >= list.first && physics::listStaleAt(i, list, v.poscell)) r |= kListStale;
-        return r;
-    }
-};
-
-/// Fluid particle i's neighbour list (physics::buildNeighbourListAt).
-template <int kDim>
-struct NeighbourListPass {
-    physics::NeighbourList list;
-    const physics::Float4* poscell;
-    const std::uint32_t* cell_start_fluid;
-    physics::FluidConstants c;
-    physics::CellGrid g;
-    SEASPRING_HD void operator()(std::uint32_t i) const {
-        physics::buildNeighbourListAt<kDim>(i, list, poscell, cell_start_fluid, c, g);
-    }
-};
-
-/// The count of fluid particle i's neighbour list (reduced with MaxU32Combine).
-struct ListCountPass {
-    const std::uint32_t* count;
-    std::uint32_t first;
-    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const { return count[i - first]; }
-};
-
-struct MaxU32Combine {
-    SEASPRING_HD std::uint32_t operator()(std::uint32_t a, std::uint32_t b) const { return a > b ? a : b; }
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const { return physics::refreshPosCellAt(i, v, g); }
 };
 
 struct OrCombine {

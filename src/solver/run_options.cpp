@@ -10,7 +10,6 @@
 #include <cerrno>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -20,7 +19,6 @@
 
 #include "core/error.h"
 #include "physics/cell_grid.h"
-#include "physics/neighbour_list.h"
 
 namespace seaspring::solver {
 
@@ -109,7 +107,6 @@ void declareOptions(CLI::App& app) {
     value("--partbegin")->excludes(restart);
     value("--cellmode");
     value("--skin");
-    value("--nlist");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
     value("--progress");
@@ -253,8 +250,6 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (*o.skin > physics::kMaxSkinFraction)
                 usageError(g.arg + ": " + g.value + " is larger than 0.5" +
                            " (the skin is a fraction of the cell size)");
-        } else if (name == "nlist") {
-            o.list_skin = toDouble(g, Range::NonNegative);
         } else if (name == "vcpmsubsteps") {
             o.solid_substeps = int(toInteger(g, 0, 1000000));
         } else if (name == "vcpmcoupling") {
@@ -317,20 +312,6 @@ RunOptions parseRunOptions(int argc, const char* const* argv) {
         usageError(rewrite(e.what()));
     }
     readValues(given, o);
-    if (o.list_skin > 0) {
-        const double skin = o.skin.value_or(physics::kDefaultSkinFraction);
-        const std::string arg = "-nlist:" + given.at("nlist").value;
-        if (skin <= 0)
-            usageError(arg + ": the neighbour list needs a skin on the cells (-skin > 0), it is kept between sorts");
-        if (o.list_skin + 2 * skin > physics::kMaxListReach)
-        {
-            char s[32];
-            std::snprintf(s, sizeof s, "%g", skin);
-            usageError(arg + " with a cell skin of " + s +
-                       ": the list skin plus twice the cell skin must be at most 0.99 cell (the search reaches "
-                       "one cell beyond 2h)");
-        }
-    }
     if (positional.size() < 2)
         usageError(std::string(positional.empty() ? "OUTDIR/NAME and OUTDIR are missing"
                                                   : "OUTDIR is missing") +
@@ -393,12 +374,6 @@ Run control:
                        0: sorted twice per step, as DualSPHysics. Results depend on it
                        at rounding level (the neighbour order), so hashes compare runs
                        of the same skin
-  -nlist:F             fluid neighbour lists with a skin of F cells (0 < F, F + 2 x skin
-                       <= 0.99; default 0: none): each fluid particle keeps the fluid
-                       candidates within 2h + F cells, rebuilt after a sort or when a
-                       particle has moved F/2 since the last build. Same results as
-                       without (same neighbour order); faster pair loops on the GPU at
-                       4 bytes per entry (about 300-400 entries per fluid particle in 3D)
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of
                        int(dt_F/dt_S)+1 (convergence studies; 0: automatic). The solid
                        is unstable when dt_F/N exceeds its stability limit

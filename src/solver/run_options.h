@@ -39,8 +39,6 @@ struct RunOptions {
     /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
     /// at every divide); unset: kDefaultSkinFraction (physics/cell_grid.h).
     std::optional<double> skin;
-    /// -nlist:F: the fluid neighbour lists' skin, F cells (0: no list; physics/neighbour_list.h).
-    double list_skin = 0;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
     /// -blowupcheck:N: scan the whole state for a blow-up every N steps (0: only at outputs);

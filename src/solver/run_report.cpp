@@ -40,7 +40,6 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("dtmin_hits", s.dtmin_hits);
     j.value("divides", static_cast<long long>(s.divides));
     j.value("sorts", static_cast<long long>(s.sorts));
-    j.value("neighbour_list_builds", static_cast<long long>(s.list_builds));
     j.value("wall_time_s", s.wall_time);
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);

@@ -33,7 +33,7 @@ std::string fmt(const char* f, double v) {
 const char* kernelName(int k) { return k == 1 ? "cubic spline" : "Wendland C2"; }
 }  // namespace
 
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, double list_skin) {
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin) {
     std::ostringstream s;
     s << dim << "D, " << (p.step_algorithm == 2 ? "symplectic" : "Verlet");
     if (p.step_algorithm == 1) s << " (Euler every " << p.verlet_steps << ")";
@@ -50,7 +50,6 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     else s << ", DBC";
     s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
     if (skin > 0) s << " with a skin of " << skin << " cell";
-    if (list_skin > 0) s << ", fluid neighbour lists with a skin of " << list_skin << " cell";
     return s.str();
 }
 
@@ -202,7 +201,6 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
     setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o));
-    setup_.list_skin = o.list_skin;
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
@@ -225,7 +223,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nmoving = c.nmoving;
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
-    sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), o.list_skin);
+    sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o));
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (setup_.mdbc.enabled)

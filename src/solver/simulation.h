@@ -34,7 +34,6 @@ struct RunSummary {
     long long steps = 0;
     long long dtmin_hits = 0;
     unsigned long long divides = 0, sorts = 0;  ///< divides, and those that sorted (skin)
-    unsigned long long list_builds = 0;         ///< fluid neighbour list builds (-nlist)
     double physical_time = 0, wall_time = 0, loop_time = 0;
     double ns_per_particle_step = 0;
     double dt_last = 0;
@@ -154,6 +153,6 @@ private:
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir);
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, double list_skin = 0);
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin);
 
 }  // namespace seaspring::solver

@@ -168,7 +168,6 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     const DivideCounts dc = backend_->divideCounts();
     sum_.divides = dc.divides;
     sum_.sorts = dc.sorts;
-    sum_.list_builds = dc.list_builds;
     sum_.solid_substeps = counters.solid_substeps;
     sum_.omega_max = counters.omega_max;
     if (setup_.solid.empty()) return;

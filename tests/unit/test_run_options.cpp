@@ -98,9 +98,6 @@ TEST(RunOptions, RunControl) {
     EXPECT_FALSE(parseWith({}).skin.has_value());
     EXPECT_EQ(*parseWith({"-skin:0"}).skin, 0.0);
     EXPECT_EQ(*parseWith({"-skin:0.25"}).skin, 0.25);
-    EXPECT_EQ(parseWith({}).list_skin, 0.0);
-    EXPECT_EQ(parseWith({"-nlist:0.3"}).list_skin, 0.3);
-    EXPECT_EQ(parseWith({"-nlist:0.5", "-skin:0.2"}).list_skin, 0.5);
     EXPECT_EQ(parseWith({"-progress:0"}).progress_interval, 0.0);
     EXPECT_EQ(parseWith({"-progress:2.5"}).progress_interval, 2.5);
     EXPECT_TRUE(parseWith({"-quiet"}).quiet);
@@ -224,10 +221,6 @@ TEST(RunOptions, UnknownAndMalformedOptions) {
     expectError({"-cpu:1"}, "-cpu:1: -cpu takes no value");
     expectError({"-skin:0.7"}, "-skin:0.7: 0.7 is larger than 0.5 (the skin is a fraction of the cell size)");
     expectError({"-skin:-1"}, "-skin:-1: -1 must be >= 0");
-    expectError({"-nlist:0.2", "-skin:0"},
-                "-nlist:0.2: the neighbour list needs a skin on the cells (-skin > 0), it is kept between sorts");
-    expectError({"-nlist:0.95"}, "-nlist:0.95 with a cell skin of 0.05: the list skin plus twice the cell skin must be at most 0.99 cell "
-                "(the search reaches one cell beyond 2h)");
     expectError({"-symplectic:1"}, "-symplectic:1: -symplectic takes no value");
     expectError({"-quiet:yes"}, "-quiet:yes: -quiet takes no value");
     expectError({"-cfl"}, "-cfl: needs a value (-cfl:VALUE)");
