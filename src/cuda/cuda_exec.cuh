@@ -44,7 +44,7 @@ __global__ void __launch_bounds__(kThreads) forEachTwoKernel(std::uint32_t ba, s
 
 constexpr int kReduceThreads = 256;
 /// Elements per thread below which a reduction takes fewer blocks than its maximum.
-constexpr std::uint32_t kReducePerThread = 8;
+constexpr std::uint32_t kReducePerThread = 1;
 
 /// combine() of a block's values in a fixed tree (every thread calls it; all get the result).
 template <class T, class C>
