@@ -141,6 +141,7 @@ SolverParameters readParameters(const ParameterTable& t) {
     p.visco_treatment =
         t.choice("ViscoTreatment", {1, 2, 3}, "1 artificial, 2 laminar+SPS, 3 laminar");
     p.visco = t.atLeast("Visco", 0, true);
+    p.laminar_lattice_correction = t.choice("LaminarLatticeCorrection", {0, 1}, "0 DualSPHysics' laminar operator, 1 its lattice bias divided out");
     p.visco_bound_factor = t.atLeast("ViscoBoundFactor", 0, true);
     t.requireNone("ViscoTime", "a viscosity-time file");
     p.density_dt =

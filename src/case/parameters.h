@@ -35,6 +35,10 @@ struct SolverParameters {
     int visco_treatment = 1;  ///< 1 artificial, 2 laminar+SPS, 3 laminar
     double visco = 0;         ///< artificial alpha, or kinematic viscosity nu [m^2/s]
     double visco_bound_factor = 1;
+    /// LaminarLatticeCorrection (SeaSpring): 1 divides out the laminar term's bias on the particle
+    /// lattice (physics::laminarLatticeRatio: nu x 1.0153 in 2D, x 1.0115 in 3D at h = 2 dp);
+    /// 0 keeps DualSPHysics' operator.
+    int laminar_lattice_correction = 1;
     int density_dt = 0;  ///< 0 none, 1 Molteni, 2 Fourtakas, 3 Fourtakas full
     double density_dt_value = 0.1;
     double coef_dt_min = 0.05;  ///< DtMin = CoefDtMin*h/c0 when dt_min is 0

@@ -68,6 +68,7 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"VcpmContactStiffness", "0.5", K::Number, "VCPM contact stiffness / first-neighbour bond stiffness (SeaSpring)"},
         {"VcpmContactDamping", "0.5", K::Number, "VCPM contact normal damping, fraction of critical (SeaSpring)"},
         {"VcpmContactFriction", "0", K::Number, "VCPM contact Coulomb friction coefficient (SeaSpring)"},
+        {"LaminarLatticeCorrection", "1", K::Number, "laminar viscosity 0:DualSPHysics' operator (1.1-1.5% weak on the particle lattice), 1:that bias divided out (SeaSpring)"},
         {"VcpmSurfaceCorrection", "1", K::Number, "VCPM surface correction 0:none (the plain lattice), 1:surface springs, volumetric weights and clamp bonds (SeaSpring)"},
     };
     return table;

@@ -41,6 +41,7 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     if (p.visco_treatment == 1) s << "artificial viscosity " << p.visco << " (boundary x" << p.visco_bound_factor << ")";
     else if (p.visco_treatment == 2) s << "laminar+SPS nu=" << p.visco;
     else s << "laminar nu=" << p.visco;
+    if (p.visco_treatment != 1) s << (p.laminar_lattice_correction ? " (lattice-corrected)" : " (DualSPHysics' operator)");
     static const char* ddt[] = {"no DDT", "DDT Molteni", "DDT Fourtakas", "DDT Fourtakas full"};
     s << ", " << ddt[p.density_dt];
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
@@ -136,6 +137,8 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
     fi.massbound = c.constants.massbound;
     fi.visco = p.visco;
     fi.visco_bound_factor = p.visco_bound_factor;
+    if (p.visco_treatment != 1 && p.laminar_lattice_correction)
+        fi.laminar_scale = 1.0 / laminarLatticeRatio(s.physics.kernel, h, dp, c.constants.dimensions);
     fi.ddt_value = p.density_dt_value;
     fi.gravity_z = c.constants.gravity.z;
     fi.dt_all_particles = p.dt_all_particles;

@@ -76,6 +76,30 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes2D) {
     }
 }
 
+// LaminarLatticeCorrection (default 1): the run's laminar nu (fluid and boundary neighbours) is
+// the case's divided by physics::laminarLatticeRatio of its kernel, h/dp and dimension
+// (tests/unit/test_viscosity_channels.cpp shows what that buys); 0 keeps the case's nu, and the
+// artificial viscosity's alpha is never scaled.
+TEST(SolverParity, LaminarLatticeCorrectionScalesOnlyTheLaminarNu) {
+    const std::string lam = R"(<parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="ViscoBoundFactor" value="2" /><parameter key="DensityDT" value="0" />)";
+    auto setupOf = [](const std::string& tag, const std::string& params) {
+        const std::string dir = scratch("latcorr_" + tag);
+        const solver::SolverCase c = solver::loadSolverCase(test::generateCase(dir, "tank", tank2d(params)));
+        return std::make_pair(solver::makeBackendSetup(c, 0, 0.05), c);
+    };
+    const auto [on, c] = setupOf("on", lam);
+    const double ratio = physics::laminarLatticeRatio(physics::KernelType::Wendland, c.constants.h, c.constants.dp, 2);
+    EXPECT_GT(ratio, 0.97);
+    EXPECT_LT(ratio, 0.999);
+    EXPECT_EQ(on.fluid.visco, float(1e-6 / ratio));
+    EXPECT_EQ(on.fluid.visco_bound, float(1e-6 / ratio * 2.0));
+    const auto off = setupOf("off", lam + R"(<parameter key="LaminarLatticeCorrection" value="0" />)").first;
+    EXPECT_EQ(off.fluid.visco, float(1e-6));
+    EXPECT_EQ(off.fluid.visco_bound, float(2e-6));
+    const auto art = setupOf("art", kVariants[0].params).first;
+    EXPECT_EQ(art.fluid.visco, float(0.05));
+}
+
 TEST(SolverParity, HashesDifferBetweenPhysicsOptions) {
     std::string first;
     for (const Variant& v : kVariants) {

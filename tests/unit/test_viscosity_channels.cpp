@@ -17,7 +17,10 @@
 /// against the analytic solution with nu_eff (the hand lattice sum), and against the plain-nu
 /// solution within (1 - lap) + 1% where the bias is visible (steady Poiseuille, interior force
 /// balance); transients before the bias shows (Poiseuille nu t/L^2 <= 0.1, Couette) are held to
-/// 1% of the plain-nu series as well.
+/// 1% of the plain-nu series as well. These tests measure DualSPHysics' operator
+/// (LaminarLatticeCorrection 0); the solver's default divides nu by the same lattice sum
+/// (physics::laminarLatticeRatio = lap), and PoiseuilleWithTheLatticeCorrectionMeetsPlainNu
+/// holds that within 1% of the plain-nu series at every time.
 ///
 /// Measured errors (tolerance in brackets):
 ///   Poiseuille, max |u - u_exact| / centre-line velocity, at nu t/L^2 = 0.02 0.05 0.1 0.3 2:
@@ -205,6 +208,38 @@ TEST_P(ChannelFlows, PoiseuilleStartUpAndSteadyProfile) {
         EXPECT_LT(spread, 1e-6 * kG * kL * kL / (8 * kNu));
     }
     std::printf("[poiseuille hdp=%.2f] dt = %.3e s, %.2f s wall\n", hdp, dt, seconds(t0));
+}
+
+// The same start-up with LaminarLatticeCorrection (the solver's default): nu divided by the
+// solver's lattice ratio (physics::laminarLatticeRatio, checked against the hand sum `lap`), so
+// the operator's lattice bias (eta^2 and the lattice's second moment) is gone and the profile
+// meets the plain-nu series within the brief's 1% at every time, the steady state included
+// (measured 0.40/0.43/0.44% at h = 1.5 dp, 0.73/0.78/0.79% at h = 2 dp; without the correction
+// 2.2% at h = 2 dp, above).
+// Broken on purpose (the scale left at 1) the steady error is back to 1.9-2.2% and this fails
+// (checked).
+TEST_P(ChannelFlows, PoiseuilleWithTheLatticeCorrectionMeetsPlainNu) {
+    const double hdp = GetParam(), dp = kL / kAcross;
+    const double ratio = laminarLatticeRatio<WendlandKernel>(hdp * dp, dp, 2);
+    EXPECT_NEAR(ratio, handLatticeSums(hdp, 2).lap, 1e-5);
+    EXPECT_NEAR(laminarLatticeRatio(KernelType::Wendland, 2.0 * dp, dp, 3), 0.98863, 1e-5);  // 3D, h = 2 dp
+    Channel ch(kAcross, kColumns, dp, hdp, kNu, 1.0 / ratio);
+    Velocities v{std::vector<double>(ch.lat.nfluid, 0.0), std::vector<double>(ch.lat.nfluid, 0.0)};
+    ch.load(v);
+    const double dt = ch.lat.stableDt();
+    double t = 0;
+    const double tscale = kL * kL / kNu;
+    for (double tt : {0.05, 0.3, 2.0}) {
+        integrate(ch.lat, v, t, tt * tscale, dt, kG, [&](const Velocities& s) { ch.load(s); });
+        const std::vector<double> p = ch.profile(v, nullptr);
+        double e_nu = 0;
+        for (int k = 0; k < kAcross; ++k)
+            e_nu = worse(e_nu, std::fabs(p[k] - poiseuilleSeries(ch.zOfRow(k), t, kL, kG, kNu)));
+        e_nu /= kG * kL * kL / (8 * kNu);
+        std::printf("[poiseuille lattice-corrected hdp=%.2f] nu t/L^2 = %.2f: error vs series(nu) %.4f (ratio %.6f)\n", hdp,
+                    tt, e_nu, ratio);
+        EXPECT_LT(e_nu, 0.01) << "t = " << t;
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

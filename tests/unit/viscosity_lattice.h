@@ -40,8 +40,8 @@ using OptSps3 = FluidOptions<WendlandKernel, Viscosity::LaminarSps, DensityDiffu
 
 /// The fluid constants the solver would make for this lattice (makeFluidConstants): h = hdp dp,
 /// masses rho0 dp^dim for fluid and wall, ViscoBoundFactor 1. c0 and B only enter the pressure,
-/// which is zero here.
-inline FluidConstants makeConstants(double dp, double hdp, int dim, double nu) {
+/// which is zero here. `laminar_scale`: LaminarLatticeCorrection's factor (1: DualSPHysics' operator).
+inline FluidConstants makeConstants(double dp, double hdp, int dim, double nu, double laminar_scale = 1.0) {
     FluidInputs in;
     in.h = hdp * dp;
     in.dp = dp;
@@ -54,6 +54,7 @@ inline FluidConstants makeConstants(double dp, double hdp, int dim, double nu) {
     in.massbound = kRho0 * vol;
     in.visco = nu;
     in.visco_bound_factor = 1.0;
+    in.laminar_scale = laminar_scale;
     return makeFluidConstants(in);
 }
 
@@ -237,10 +238,10 @@ struct Channel {
     std::vector<bool> top;              ///< wall particle is in the top wall
     double u_top = 0;                   ///< top wall velocity (Couette); bottom wall fixed
 
-    Channel(int nz_, int nx_, double dp, double hdp, double nu) : nx(nx_), nz(nz_) {
+    Channel(int nz_, int nx_, double dp, double hdp, double nu, double laminar_scale = 1.0) : nx(nx_), nz(nz_) {
         lat.dp = dp;
         lat.h = hdp * dp;
-        lat.c = makeConstants(dp, hdp, 2, nu);
+        lat.c = makeConstants(dp, hdp, 2, nu, laminar_scale);
         lz = nz * dp;
         layers = int(std::floor(2.0 * hdp + 1e-9));  // wall rows within 2h of the first fluid row
         for (int k = 0; k < nz; ++k)
