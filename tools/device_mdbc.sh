@@ -10,6 +10,10 @@
 #   gate      the same for cases/antoci_gate2d and _mdbc (mDBC on the rubber gate)
 #   parity    state hashes of cpu 1 and 2 threads and gpu on the mDBC cases
 #   cost      SPHERIC Test 2 at dp 0.006 (4.36 M particles): ns/particle/step, DBC against mDBC
+#   cost2d    the 2D impact case at its fine dp (0.005), the same first COST2D_STEPS steps (default
+#             4000: the collapse and the first run-up) with DBC and with mDBC free-slip, two rounds
+#             alternated (COST2D_ROUNDS): ms per step; with BASE_BIN also the baseline build's
+#             mDBC run (its own gencase) and its state hash
 # Usage: tools/device_mdbc.sh still impact cost
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -190,6 +194,31 @@ step_cost() {
             "$bin/seaspring" -gpu -symplectic -wendland -ddt:3 -nsteps:200 -sv:none -progress:0 "$x/sph" "$x/o$b" >"$x/log$b" 2>&1
             echo "round $round Boundary=$b: $(grep -E 'Finished' "$x/log$b" | grep -o '[0-9.]* ns/particle/step') $(grep -o 'Particles: [0-9]*' "$x/log$b") $(grep -o 'mDBC: .*' "$x/log$b" | head -1)" | tee -a "$table"
         done
+    done
+}
+
+step_cost2d() {
+    local table="$out/cost2d.txt" x="$work/cost2d" n="${COST2D_STEPS:-4000}"
+    mkdir -p "$x"
+    cp "$root/cases/dambreak_impact2d/DambreakImpact2D_Def.xml" "$x/dbc_Def.xml"
+    sed -e 's/key="SlipMode" value="1"/key="SlipMode" value="3"/' \
+        "$root/cases/dambreak_impact2d_mdbc/DambreakImpact2DMdbc_Def.xml" >"$x/mdbc_Def.xml"
+    for c in dbc mdbc; do "$bin/gencase" "$x/${c}_Def.xml" "$x/$c" -dp:0.005 >/dev/null 2>&1 || echo "gencase $c failed"; done
+    # The baseline runs a case written by its own gencase (a newer gencase may write parameters it does not know).
+    if [[ -n "${BASE_BIN:-}" ]]; then
+        "$root/$BASE_BIN/gencase" "$x/mdbc_Def.xml" "$x/mdbc_base" -dp:0.005 >/dev/null 2>&1 || echo "baseline gencase failed"
+    fi
+    echo "2D impact, dp 0.005, first $n steps, symplectic/Wendland/art 0.02/DDT; $gpu" >"$table"
+    one() {  # label bin case
+        "$2/seaspring" -gpu -overwrite -nsteps:$n -sv:none -progress:0 "$x/$3" "$x/o_$1" >"$x/log_$1" 2>&1 || tail -3 "$x/log_$1"
+        echo "$1: $(grep -o 'loop [0-9.]* s' "$x/log_$1") $(grep -o 'Particles: [0-9]*' "$x/log_$1") $(grep -o 'State hash: [0-9a-f]*' "$x/log_$1")" |
+            awk -v n=$n '{ for (i = 1; i <= NF; i++) if ($i == "loop") { printf "%s  %.4f ms/step\n", $0, 1000 * $(i + 1) / n } }' |
+            tee -a "$table"
+    }
+    for round in $(seq 1 "${COST2D_ROUNDS:-2}"); do
+        one "dbc" "$bin" dbc
+        one "mdbc-freeslip" "$bin" mdbc
+        [[ -n "${BASE_BIN:-}" ]] && one "mdbc-freeslip-base" "$root/$BASE_BIN" mdbc_base
     done
 }
 

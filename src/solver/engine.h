@@ -121,8 +121,7 @@ public:
             a.hydro_out = solid_.fluid_force.data();
         }
         const physics::FluidConstants& c = setup_.fluid;
-        if (setup_.mdbc.enabled) mdbc(a);
-        exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, c});
+        pressures(a);
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
         });
@@ -176,9 +175,8 @@ public:
         if (setup_.mdbc.enabled) {
             saved.resize(nbound_);
             exec_.copy(saved.data(), p_.velrho.data(), nbound_);
-            mdbc(forceArgs());
         }
-        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PressurePass{p_.view(), setup_.fluid});
+        pressures(forceArgs());
         Buf<physics::Double3> force;  // output times only
         force.resize(nbound_);
         hydroForces(nullptr, nbound_, force.data());
@@ -332,8 +330,13 @@ private:
         return a;
     }
 
-    /// mDBC: boundary densities (and velocities) from their ghost nodes.
-    void mdbc(const ForceArgs& a) {
+    /// The pressure pass; with mDBC, in the same launch, the boundary particles' densities (and
+    /// velocities) from their ghost nodes first.
+    void pressures(const ForceArgs& a) {
+        if (!setup_.mdbc.enabled) {
+            exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, setup_.fluid});
+            return;
+        }
         physics::MdbcInputs in;
         in.normal0 = mdbc_normal0_.data();
         in.visc_vel = mdbc_visc_vel_.empty() ? nullptr : mdbc_visc_vel_.data();
@@ -353,7 +356,7 @@ private:
             in.bonds = solid_.bonds();
         }
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
-            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::mdbc(exec_, setup_.mdbc.slip, a, in,
+            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::mdbcAndPressure(exec_, setup_.mdbc.slip, a, in,
                                                                            setup_.mdbc.constants);
         });
     }

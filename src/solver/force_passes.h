@@ -43,10 +43,12 @@ struct ForcePasses {
     /// sorted index s when `slot` is null.
     static void hydro(const Exec& exec, const PhysicsChoice& choice, const ForceArgs& a, const std::uint32_t* slot,
                       std::uint32_t n, physics::Double3* out);
-    /// mDBC: the density (and velocity) of boundary particles [0, a.nbound) from their ghost
-    /// nodes (physics/mdbc.h), before the pressure pass.
-    static void mdbc(const Exec& exec, physics::SlipMode slip, const ForceArgs& a, const physics::MdbcInputs& in,
-                     const physics::MdbcConstants& m);
+    /// mDBC and the pressure pass in one launch: the density (and velocity) of boundary
+    /// particles [0, a.nbound) from their ghost nodes (physics/mdbc.h), each followed by its
+    /// pressure, beside the fluid particles' pressure [a.nbound, a.np) (which reads nothing mDBC
+    /// writes).
+    static void mdbcAndPressure(const Exec& exec, physics::SlipMode slip, const ForceArgs& a,
+                                const physics::MdbcInputs& in, const physics::MdbcConstants& m);
 };
 
 /// Calls f(Kernel{}, std::integral_constant<int, dim>{}) for the run's kernel and dimension.

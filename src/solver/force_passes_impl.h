@@ -9,6 +9,7 @@
 #include "physics/solid_coupling.h"
 #include "solver/force_passes.h"
 #include "solver/launch.h"
+#include "solver/particle_passes.h"
 
 namespace seaspring::solver {
 
@@ -60,7 +61,7 @@ struct BoundThenHydroPass {
     }
 };
 
-/// mDBC boundary particle i (physics::mdbcBoundaryAt).
+/// mDBC boundary particle i (physics::mdbcBoundaryAt), then its pressure (physics::pressureAt).
 template <class Kernel, int kDim>
 struct MdbcPass {
     physics::ParticleView v;
@@ -69,7 +70,10 @@ struct MdbcPass {
     physics::FluidConstants c;
     physics::MdbcConstants m;
     physics::CellGrid g;
-    SEASPRING_HD void operator()(std::uint32_t i) const { physics::mdbcBoundaryAt<Kernel, kDim>(i, v, in, slip, c, m, g); }
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        physics::mdbcBoundaryAt<Kernel, kDim>(i, v, in, slip, c, m, g);
+        physics::pressureAt(i, v, c);
+    }
 };
 
 /// Calls f(FluidOptions<...>{}) for the run's viscosity and density diffusion.
@@ -147,10 +151,10 @@ void ForcePasses<Exec, Kernel, kDim>::hydro(const Exec& exec, const PhysicsChoic
 }
 
 template <class Exec, class Kernel, int kDim>
-void ForcePasses<Exec, Kernel, kDim>::mdbc(const Exec& exec, physics::SlipMode slip, const ForceArgs& a,
-                                           const physics::MdbcInputs& in, const physics::MdbcConstants& m) {
-    if (a.nbound == 0) return;
-    exec.template forEach<LaunchBoundPairs>(0u, a.nbound, MdbcPass<Kernel, kDim>{a.v, in, slip, a.c, m, a.g});
+void ForcePasses<Exec, Kernel, kDim>::mdbcAndPressure(const Exec& exec, physics::SlipMode slip, const ForceArgs& a,
+                                                      const physics::MdbcInputs& in, const physics::MdbcConstants& m) {
+    exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(
+        0u, a.nbound, MdbcPass<Kernel, kDim>{a.v, in, slip, a.c, m, a.g}, a.nbound, a.np, PressurePass{a.v, a.c});
 }
 
 }  // namespace seaspring::solver
