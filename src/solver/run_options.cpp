@@ -109,6 +109,7 @@ void declareOptions(CLI::App& app) {
     value("--skin");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
+    value("--vcpmdtcoef");
     value("--progress");
     flag("--quiet");
     CLI::Option* verlet = optional("--verlet");
@@ -254,6 +255,9 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             o.solid_substeps = int(toInteger(g, 0, 1000000));
         } else if (name == "vcpmcoupling") {
             o.vcpm_coupling = int(toInteger(g, 1, 2));
+        } else if (name == "vcpmdtcoef") {
+            o.vcpm_dt_coef = toDouble(g, Range::Positive);
+            if (*o.vcpm_dt_coef > 2) usageError(g.arg + ": " + g.value + " is larger than 2 (as the VcpmDtCoef parameter)");
         } else if (name == "progress") {
             o.progress_interval = toDouble(g, Range::NonNegative);
         } else if (name == "quiet") {
@@ -395,6 +399,7 @@ Physics (override the case's <parameters>):
   -dtfixed:DT          constant time step DT > 0 [s] (DtFixed)
   -vcpmcoupling:K      VCPM coupling: 1 staggered as seed 000, 2 staggered midpoint
                        (VcpmCoupling, SeaSpring)
+  -vcpmdtcoef:F        VCPM solid sub-step coefficient, 0 < F <= 2 (VcpmDtCoef, SeaSpring)
 Other:
   -h, -help, --help    this text
   -version             the version
@@ -414,6 +419,7 @@ and the last state written).
 void applyOverrides(const RunOptions& o, SolverParameters& p) {
     if (o.step_algorithm) p.step_algorithm = *o.step_algorithm;
     if (o.vcpm_coupling) p.vcpm_coupling = *o.vcpm_coupling;
+    if (o.vcpm_dt_coef) p.vcpm_dt_coef = *o.vcpm_dt_coef;
     if (o.verlet_steps) p.verlet_steps = *o.verlet_steps;
     if (o.kernel) p.kernel = *o.kernel;
     if (o.visco_treatment) p.visco_treatment = *o.visco_treatment;

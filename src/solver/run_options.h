@@ -41,6 +41,7 @@ struct RunOptions {
     std::optional<double> skin;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
+    std::optional<double> vcpm_dt_coef;  ///< -vcpmdtcoef:F (VcpmDtCoef), 0 < F <= 2
     /// -blowupcheck:N: scan the whole state for a blow-up every N steps (0: only at outputs);
     /// blowup_check.h.
     long long blowup_check_every = 100;

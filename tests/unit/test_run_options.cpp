@@ -440,5 +440,10 @@ TEST(RunOptions, VcpmOptions) {
     applyOverrides(parseWith({"-vcpmcoupling:1"}), p);
     EXPECT_EQ(p.vcpm_coupling, 1);
     expectError({"-vcpmcoupling:3"}, "-vcpmcoupling:3: 3 must be 1..2");
+    EXPECT_FALSE(parseWith({}).vcpm_dt_coef.has_value());
+    applyOverrides(parseWith({"-vcpmdtcoef:0.6"}), p);
+    EXPECT_EQ(p.vcpm_dt_coef, 0.6);
+    expectError({"-vcpmdtcoef:3"}, "-vcpmdtcoef:3: 3 is larger than 2 (as the VcpmDtCoef parameter)");
+    expectError({"-vcpmdtcoef:0"}, "-vcpmdtcoef:0: 0 must be > 0");
     expectError({"-vcpmsubsteps:-1"}, "-vcpmsubsteps:-1: -1 must be 0..1000000");
 }
