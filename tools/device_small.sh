@@ -3,10 +3,11 @@
 # Antoci gate 2D and FlexStruc Liao 2D: phase timers (SEASPRING_TIMERS=1, the GPU synchronised
 # after each phase), and the GPU time and launches per kernel over 200 steps (Nsight Compute)
 # against the wall time of the same steps without the profiler.
-# Env: SS_BIN (default build-dev/bin), CASES (default "ant liao").
+# Env: SS_BIN (default build-dev/bin), CASES (default "ant liao"), W (work folder, default /tmp/w;
+# one per binary when their case formats differ).
 set -u
 export LD_LIBRARY_PATH=$PWD/build-dev/lib
-b=${SS_BIN:-build-dev/bin}; w=/tmp/w; mkdir -p $w
+b=${SS_BIN:-build-dev/bin}; w=${W:-/tmp/w}; mkdir -p $w
 nvidia-smi --query-gpu=name --format=csv,noheader
 [[ -f $w/ant.h5 ]] || $b/gencase cases/antoci_gate2d/AntociGate2D_Def.xml $w/ant >/dev/null
 [[ -f $w/liao.h5 ]] || $b/gencase build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $w/liao >/dev/null 2>&1

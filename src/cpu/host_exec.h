@@ -74,6 +74,19 @@ public:
         return total;
     }
 
+    /// A reduction's result that the host takes later (reduceDeferred): here it is computed at
+    /// once.
+    template <class T>
+    struct Deferred {
+        T value{};
+        T get() const { return value; }
+    };
+    /// reduce() into `out`, for out.get() later (the GPU's version does not wait for it).
+    template <class T, class F, class C>
+    void reduceDeferred(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, Deferred<T>& out) const {
+        out.value = reduce(b, e, init, f, combine);
+    }
+
     /// Runs `body(run)` with a runner run(n, pass) = pass(i) for i < n, all threads of one
     /// parallel region sharing each pass (`omp for`, whose implied barrier orders the passes).
     template <class Body>

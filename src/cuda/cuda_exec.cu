@@ -37,6 +37,9 @@ CudaExec::CudaExec(int device) {
     lower_bound_.resize(1);
     reduce_done_.resize(1);
     SEASPRING_CUDA_CHECK(cudaMemset(reduce_done_.data(), 0, sizeof(unsigned)));
+    void* pinned = nullptr;
+    SEASPRING_CUDA_CHECK(cudaMallocHost(&pinned, kReadbackBytes));
+    readback_.reset(pinned);
 }
 
 void CudaExec::prepareSort(std::size_t n) {
@@ -63,8 +66,10 @@ std::uint32_t CudaExec::lowerBound(const std::uint64_t* keys, std::uint32_t b, s
     if (e <= b) return b;
     lowerBoundKernel<<<1, 1>>>(b, e, keys, value, lower_bound_.data());
     SEASPRING_CUDA_LAUNCH_CHECK();
+    SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), lower_bound_.data(), sizeof(std::uint32_t), cudaMemcpyDeviceToHost));
+    SEASPRING_CUDA_CHECK(cudaStreamSynchronize(0));
     std::uint32_t r = b;
-    SEASPRING_CUDA_CHECK(cudaMemcpy(&r, lower_bound_.data(), sizeof r, cudaMemcpyDeviceToHost));
+    std::memcpy(&r, readback_.get(), sizeof r);
     return r;
 }
 

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,6 +106,33 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
 __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
                                  std::uint32_t* out);
 
+/// A reduction's result on its way to the host (CudaExec::reduceDeferred): an asynchronous
+/// copy into pinned memory and an event. get() waits for the event; when a later readback has
+/// synchronised the device in the meantime, it does not wait at all.
+template <class T>
+class DeferredValue {
+public:
+    DeferredValue() {
+        SEASPRING_CUDA_CHECK(cudaMallocHost(reinterpret_cast<void**>(&host_), sizeof(T)));
+        SEASPRING_CUDA_CHECK(cudaEventCreateWithFlags(&done_, cudaEventDisableTiming));
+    }
+    ~DeferredValue() {
+        cudaEventDestroy(done_);
+        cudaFreeHost(host_);
+    }
+    DeferredValue(const DeferredValue&) = delete;
+    DeferredValue& operator=(const DeferredValue&) = delete;
+    T get() const {
+        SEASPRING_CUDA_CHECK(cudaEventSynchronize(done_));
+        return *host_;
+    }
+
+private:
+    friend class CudaExec;
+    T* host_ = nullptr;
+    cudaEvent_t done_ = nullptr;
+};
+
 /// Threads of the single-block sequence kernel (block-stride loops over the indices).
 constexpr int kSequenceBlockThreads = 1024;
 
@@ -172,22 +201,30 @@ public:
         forEach<LaunchB>(bb, eb, fb);
     }
 
+    template <typename T>
+    using Deferred = DeferredValue<T>;
+
     /// combine(..., f(i)) over [b, e) from `init` in one launch (reduceKernel: up to 4 blocks
     /// per SM, fewer for short ranges, the last block combining the blocks' results); `combine`
-    /// must be exact, commutative and associative, so the shape changes no result. Synchronises.
+    /// must be exact, commutative and associative, so the shape changes no result. Synchronises
+    /// (the result comes back through pinned memory).
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
-        const std::uint64_t per_block = std::uint64_t(kReduceThreads) * kReducePerThread;
-        const unsigned blocks = unsigned(std::max<std::uint64_t>(
-            1, std::min<std::uint64_t>(reduce_blocks_, (std::uint64_t(e > b ? e - b : 0) + per_block - 1) / per_block)));
-        const std::size_t need = sizeof(T) * (blocks + 1);
-        if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
-        T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
-        reduceKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data());
-        SEASPRING_CUDA_LAUNCH_CHECK();
+        static_assert(sizeof(T) <= kReadbackBytes, "a reduction value fits the pinned readback");
+        const T* result = launchReduce(b, e, init, f, combine);
+        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), result, sizeof(T), cudaMemcpyDeviceToHost));
+        SEASPRING_CUDA_CHECK(cudaStreamSynchronize(0));
         T r;
-        SEASPRING_CUDA_CHECK(cudaMemcpy(&r, parts + blocks, sizeof r, cudaMemcpyDeviceToHost));
+        std::memcpy(&r, readback_.get(), sizeof r);
         return r;
+    }
+
+    /// reduce() without waiting: the result follows the kernel into `out` (out.get() waits).
+    template <class T, class F, class C>
+    void reduceDeferred(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, Deferred<T>& out) const {
+        const T* result = launchReduce(b, e, init, f, combine);
+        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(out.host_, result, sizeof(T), cudaMemcpyDeviceToHost));
+        SEASPRING_CUDA_CHECK(cudaEventRecord(out.done_));
     }
 
     /// Runs `body(run)`: in ONE single-block kernel when work <= the block limit (`widest`:
@@ -220,6 +257,20 @@ public:
     void synchronize() const { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
 
 private:
+    /// Launches the reduction; returns where its result will be on the device.
+    template <class T, class F, class C>
+    const T* launchReduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
+        const std::uint64_t per_block = std::uint64_t(kReduceThreads) * kReducePerThread;
+        const unsigned blocks = unsigned(std::max<std::uint64_t>(
+            1, std::min<std::uint64_t>(reduce_blocks_, (std::uint64_t(e > b ? e - b : 0) + per_block - 1) / per_block)));
+        const std::size_t need = sizeof(T) * (blocks + 1);
+        if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
+        T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
+        reduceKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data());
+        SEASPRING_CUDA_LAUNCH_CHECK();
+        return parts + blocks;
+    }
+
     struct GridRun {
         const CudaExec* exec;
         template <class F>
@@ -231,8 +282,13 @@ private:
         static constexpr int kGpuThreads = 256;
     };
 
+    static constexpr std::size_t kReadbackBytes = 64;
     std::string name_;
     std::uint32_t reduce_blocks_ = 1;
+    struct FreeHost {
+        void operator()(void* p) const { cudaFreeHost(p); }
+    };
+    std::unique_ptr<void, FreeHost> readback_;  ///< pinned host memory for the readbacks (kReadbackBytes)
     std::uint32_t block_max_ = kSequenceBlockMaxDefault;
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
     DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)

@@ -286,19 +286,28 @@ SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const 
     return sum;
 }
 
-/// Pass 1b, for clamp node c (after pass 1 decided the states): S_c over its intact bonds.
-SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const SolidBonds& b,
+/// Pass 1b, for clamp node c: S_c over its intact bonds. It decides each bond's breakage
+/// itself, with the bits solidSumAt decides it with at the solid end (the same length from
+/// either end, the solid particle's material and keep box), so it runs in the same pass as
+/// solidSumAt: b.broken[slot] read while the solid end may set it gives the same result
+/// either way (the old flag or'ed with the same test).
+SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const SolidState& st, const SolidBonds& b,
                                       const ClampNodes& cn, double f) {
     const Double3 p = clampPosAt(cn, c, f);
+    const bool out_c = solidOutside(st.keep, p);
     const int nb = cn.count[c];
     double sum = 0.0;
     for (int q = 0; q < nb; ++q) {
         const std::uint32_t k = std::uint32_t(q) * cn.n + c;
-        const std::uint32_t slot = cn.slot[k];
-        if (b.broken[slot]) continue;
+        const std::uint32_t slot = cn.slot[k], s = cn.partner[k];
+        const Double3 ps = ep[s];
         double dx, dy, dz;
-        const double len = bondVector(p, ep[cn.partner[k]], dx, dy, dz);
-        sum += halfElongation(len, b.rest[slot]);
+        const double len = bondVector(p, ps, dx, dy, dz);
+        const double rest = b.rest[slot];
+        if (b.broken[slot] || bondBreaks(len, rest, st.material[st.body[s]].crit_stretch) ||
+            solidOutside(st.keep, ps) || out_c)
+            continue;
+        sum += halfElongation(len, rest);
     }
     return sum;
 }

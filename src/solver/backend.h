@@ -142,6 +142,11 @@ public:
     /// every step, so a diverging solid stops the run at the end of the step it diverged in
     /// (0 without solids).
     virtual std::uint32_t solidsPastBounds() = 0;
+    /// Starts solidsPastBounds()'s reduction now, after a step's last sub-cycle, without
+    /// waiting for it: its result then comes back with the step's next readback (the
+    /// division's), not in a round trip of its own. solidsPastBounds() takes it (or runs the
+    /// reduction itself when none was started).
+    virtual void startSolidsCheck() = 0;
     /// The largest speed of a solid particle now [m/s] (0 without solids; the solid-only
     /// stepper sizes its chunks of sub-steps with it when contact is on).
     virtual double solidMaxSpeed() = 0;

@@ -125,10 +125,13 @@ public:
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
         });
-        // The stress for the next evaluation (DualSPHysics lags it by one evaluation).
+        // With SPS, the stress for the next evaluation (DualSPHysics lags it by one evaluation)
+        // in the dt reduction's launch.
         if (setup_.physics.visco == physics::Viscosity::LaminarSps)
-            exec_.template forEach<LaunchDefault>(a.nbound, a.np, SpsTauPass{a.v, c.sps_smag, c.sps_blin});
-        return exec_.reduce(0u, a.np, physics::DtMaxima{}, DtMaximaPass{a.nbound, a.v, c.dt_all_particles != 0},
+            return exec_.reduce(0u, a.np, physics::DtMaxima{},
+                                DtMaximaPass<true>{a.nbound, a.v, c.dt_all_particles != 0, c.sps_smag, c.sps_blin},
+                                DtMaximaCombine{});
+        return exec_.reduce(0u, a.np, physics::DtMaxima{}, DtMaximaPass<false>{a.nbound, a.v, c.dt_all_particles != 0},
                             DtMaximaCombine{});
     }
 
@@ -151,9 +154,16 @@ public:
     }
     std::uint32_t solidsPastBounds() override {
         if (solid_.n == 0) return 0;
-        return exec_.reduce(0u, solid_.n, 0u,
-                            SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(), subCycleContact()},
-                            CountCombine{});
+        if (!solid_check_started_) startSolidsCheck();
+        solid_check_started_ = false;
+        return solid_check_.get();
+    }
+    void startSolidsCheck() override {
+        if (solid_.n == 0) return;
+        exec_.reduceDeferred(0u, solid_.n, 0u,
+                             SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(), subCycleContact()},
+                             CountCombine{}, solid_check_);
+        solid_check_started_ = true;
     }
     double solidMaxSpeed() override {
         if (solid_.n == 0) return 0.0;
@@ -467,7 +477,7 @@ private:
         const SubCycleContact ct = subCycleContact();
         const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
                                  setup_.step.gx, setup_.step.gy, setup_.step.gz, ct};
-        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, std::max(solid_.n, solid_.nclamp), body);
+        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, solid_.n + solid_.nclamp, body);  // widest: the sums
     }
 
     /// The contact views of the solids' sub-cycle (off without contact).
@@ -499,6 +509,8 @@ private:
     }
 
     Exec exec_;
+    typename Exec::template Deferred<std::uint32_t> solid_check_;  ///< startSolidsCheck's result
+    bool solid_check_started_ = false;
     BackendSetup setup_;
     std::uint32_t nbound_ = 0, nfluid_ = 0;
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)

@@ -152,18 +152,19 @@ struct PressurePass {
     SEASPRING_HD void operator()(std::uint32_t i) const { physics::pressureAt(i, v, c); }
 };
 
-struct SpsTauPass {
-    physics::ParticleView v;
-    float smag, blin;
-    SEASPRING_HD void operator()(std::uint32_t i) const { physics::spsTauAt(i, v, smag, blin); }
-};
-
-/// Value pass of the dt reduction (combined with DtMaximaCombine: max, exact in any order).
+/// Value pass of the dt reduction (combined with DtMaximaCombine: max, exact in any order);
+/// kSps: first the SPS stress of fluid particle i for the next evaluation (physics::spsTauAt;
+/// the dt maxima do not read it), in the same launch.
+template <bool kSps>
 struct DtMaximaPass {
     std::uint32_t nbound;
     physics::ParticleView v;
     bool all_particles;
+    float smag = 0.f, blin = 0.f;
     SEASPRING_HD physics::DtMaxima operator()(std::uint32_t i) const {
+        if constexpr (kSps) {
+            if (i >= nbound) physics::spsTauAt(i, v, smag, blin);
+        }
         return physics::dtMaximaAt(i, nbound, v, all_particles);
     }
 };

@@ -3,15 +3,16 @@
 /// \brief The passes of the VCPM solids, one functor each over one function of physics/vcpm.h
 ///        or physics/solid_coupling.h, and the sub-cycle as one sequence of passes.
 ///
-/// A sub-step is six passes (sums at r^m, clamp sums, predictor, sums at r^{m+1/2}, clamp sums,
-/// corrector), eight with contact (its force before the predictor and the corrector), each
-/// needing the previous one complete. SolidSubCycle writes that sequence
+/// A sub-step is four passes (sums at r^m, predictor, sums at r^{m+1/2}, corrector; the sums
+/// pass also takes the clamp nodes' sums and, with contact, the contact force), each needing
+/// the previous one complete. SolidSubCycle writes that sequence
 /// once; the execution policy's `sequence` runs it with a runner `run(n, pass)` that runs the
 /// pass for indices [0, n) and returns when all are done: an `omp for` inside one parallel
 /// region (CPU), one grid-wide launch per pass (GPU, large solids), or a block-stride loop and
 /// a barrier inside ONE single-block kernel (GPU, small solids: one launch per sub-cycle
-/// instead of 1 + 6 n). Every pass writes only its own index's entries, so each runner gives
-/// the same bits.
+/// instead of 1 + 4 n). Every pass writes only its own index's entries, so each runner gives
+/// the same bits (a clamp node reads a breakage flag that the bond's solid end may set in the
+/// same pass; physics::clampSumAt gets the same result from the old and the new flag).
 #pragma once
 
 #include <cstdint>
@@ -29,30 +30,6 @@ struct ClampMotion {
     const physics::RigidMotionGpu* motions = nullptr;
     physics::Double3* pos_start = nullptr;
     physics::Double3* pos_end = nullptr;
-};
-
-struct ClampMotionPass {
-    ClampMotion cm;
-    SEASPRING_HD void operator()(std::uint32_t c) const {
-        physics::clampMotionAt(c, cm.pos_initial, cm.object, cm.motions, cm.pos_start, cm.pos_end);
-    }
-};
-
-struct SolidSumPass {
-    const physics::Double3* ep;
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f;
-    SEASPRING_HD void operator()(std::uint32_t s) const { st.sum[s] = physics::solidSumAt(s, ep, st, b, cn, f); }
-};
-
-struct ClampSumPass {
-    const physics::Double3* ep;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f;
-    SEASPRING_HD void operator()(std::uint32_t c) const { cn.sum[c] = physics::clampSumAt(c, ep, b, cn, f); }
 };
 
 struct SolidPredictorPass {
@@ -92,28 +69,6 @@ struct SolidToBoundaryPass {
     }
 };
 
-/// Contact (physics/solid_contact.h): the candidate lists at the start of a sub-cycle ...
-struct ContactListPass {
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ContactBoundary w;
-    physics::CellGrid g;
-    physics::ContactParams cp;
-    physics::ContactList cl;
-    SEASPRING_HD void operator()(std::uint32_t s) const { physics::contactCandidatesAt(s, st, b, w, g, cp, cl); }
-};
-
-/// ... and the contact force of an evaluation at positions `ep` (into st.contact_force).
-struct ContactForcePass {
-    const physics::Double3* ep;
-    physics::SolidState st;
-    physics::ContactBoundary w;
-    physics::ContactParams cp;
-    physics::ContactList cl;
-    physics::Double3* out;
-    SEASPRING_HD void operator()(std::uint32_t s) const { out[s] = physics::contactForceAt(s, ep, st, w, cp, cl); }
-};
-
 /// The contact views of a sub-cycle (`on` false: no contact).
 struct SubCycleContact {
     bool on = false;
@@ -122,6 +77,45 @@ struct SubCycleContact {
     physics::ContactParams cp;
     physics::ContactList cl;
     physics::Double3* force = nullptr;
+};
+
+/// The first pass of a force evaluation at positions `ep`: the sums S of the solid particles
+/// (indices [0, b.n): physics::solidSumAt, which decides the bonds' breakage) and of the clamp
+/// nodes ([b.n, b.n + cn.n): physics::clampSumAt decides its bonds' breakage with the same
+/// bits, so it needs no pass of its own); with contact, each solid particle's contact force
+/// too (it reads positions and velocities, which no part of this pass writes).
+struct SolidSumsPass {
+    const physics::Double3* ep;
+    physics::SolidState st;
+    physics::SolidBonds b;
+    physics::ClampNodes cn;
+    double f;
+    SubCycleContact ct;
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        if (i < b.n) {
+            st.sum[i] = physics::solidSumAt(i, ep, st, b, cn, f);
+            if (ct.on) ct.force[i] = physics::contactForceAt(i, ep, st, ct.w, ct.cp, ct.cl);
+        } else {
+            cn.sum[i - b.n] = physics::clampSumAt(i - b.n, ep, st, b, cn, f);
+        }
+    }
+};
+
+/// The start of a sub-cycle: the clamp nodes' motion over it (indices [0, cn.n)) and, with
+/// contact, the solid particles' candidate lists ([cn.n, cn.n + b.n); they read the solid
+/// particles and the boundary block, not the clamp nodes' motion).
+struct SubCycleStartPass {
+    ClampMotion cm;
+    std::uint32_t nclamp;
+    physics::SolidState st;
+    physics::SolidBonds b;
+    SubCycleContact ct;
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        if (i < nclamp)
+            physics::clampMotionAt(i, cm.pos_initial, cm.object, cm.motions, cm.pos_start, cm.pos_end);
+        else
+            physics::contactCandidatesAt(i - nclamp, st, b, ct.w, ct.g, ct.cp, ct.cl);
+    }
 };
 
 /// Value pass of the per-step blow-up test (physics::solidAlarmAfterSubCycleAt: 1 for a
@@ -155,7 +149,7 @@ struct CountCombine {
 
 /// Clamp motion (and the contact lists), then n sub-steps of dt (fractions of the interval
 /// computed with IEEE division and product, so every runner has the same bits); with contact,
-/// the contact force after the sums of each evaluation.
+/// the contact force in the sums pass of each evaluation.
 struct SolidSubCycle {
     physics::SolidState st;
     physics::SolidBonds b;
@@ -170,18 +164,14 @@ struct SolidSubCycle {
 #endif
     template <class Run>
     SEASPRING_HD void operator()(Run& run) const {
-        run(cn.n, ClampMotionPass{cm});
-        if (ct.on) run(b.n, ContactListPass{st, b, ct.w, ct.g, ct.cp, ct.cl});
+        run(cn.n + (ct.on ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct});
         const double inv_n = 1.0 / double(n);
+        const std::uint32_t nsums = b.n + cn.n;
         for (int m = 0; m < n; ++m) {
             const double f0 = double(m) * inv_n, fh = (double(m) + 0.5) * inv_n;
-            run(b.n, SolidSumPass{st.pos, st, b, cn, f0});
-            run(cn.n, ClampSumPass{st.pos, b, cn, f0});
-            if (ct.on) run(b.n, ContactForcePass{st.pos, st, ct.w, ct.cp, ct.cl, ct.force});
+            run(nsums, SolidSumsPass{st.pos, st, b, cn, f0, ct});
             run(b.n, SolidPredictorPass{st, b, cn, f0, dt, gx, gy, gz});
-            run(b.n, SolidSumPass{st.pos_half, st, b, cn, fh});
-            run(cn.n, ClampSumPass{st.pos_half, b, cn, fh});
-            if (ct.on) run(b.n, ContactForcePass{st.pos_half, st, ct.w, ct.cp, ct.cl, ct.force});
+            run(nsums, SolidSumsPass{st.pos_half, st, b, cn, fh, ct});
             run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
         }
     }

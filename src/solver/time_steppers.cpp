@@ -16,7 +16,12 @@ namespace {
 /// `motion_interval` (the coming step's dt where known), and the division.
 StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_interval) {
     PhaseTimers& timers = ctx.timers();
-    if (ctx.hasSolids()) timers.time(PhaseTimers::Solid, [&] { ctx.advanceSolid(time, dt); });
+    if (ctx.hasSolids()) {
+        timers.time(PhaseTimers::Solid, [&] {
+            ctx.advanceSolid(time, dt);
+            ctx.backend().startSolidsCheck();  // its result comes back with the division's
+        });
+    }
     const double t = time + dt;
     timers.time(PhaseTimers::Motion, [&] { ctx.placeMoving(t, motion_interval); });
     timers.time(PhaseTimers::Divide, [&] { ctx.backend().divide(false); });

@@ -322,7 +322,7 @@ Oscillation oscillate(bool clamp, const VcpmMaterial& m, double dp, double a, do
     b.pos[b.n - 1].x += a;
     auto sums = [&](const Double3* ep) {
         for (std::uint32_t s = 0; s < b.n; ++s) b.sum[s] = solidSumAt(s, ep, st, sb, cn, 0.0);
-        for (std::uint32_t c = 0; c < cn.n; ++c) csum[c] = clampSumAt(c, ep, sb, cn, 0.0);
+        for (std::uint32_t c = 0; c < cn.n; ++c) csum[c] = clampSumAt(c, ep, st, sb, cn, 0.0);
     };
     Oscillation o;
     for (int m_ = 0; m_ <= steps; ++m_) {
