@@ -126,7 +126,6 @@ struct SolidBonds {
     /// S*, and the mirror slot's in the partner's (1 for a clamp node).
     const double* vw = nullptr;
     const double* vw_partner = nullptr;
-    std::uint32_t rows = 0;  ///< slots per particle: the slot arrays hold rows * n entries
 };
 
 /// Clamp nodes: the boundary particles that clamp bonds reach. Their positions are prescribed
@@ -229,10 +228,6 @@ struct SolidState {
     Double3* vel = nullptr;        ///< v^m, then v^{m+1/2}, then v^{m+1}
     Double3* vel0 = nullptr;       ///< v^m during the sub-step
     double* sum = nullptr;         ///< S of each particle (this evaluation)
-    /// Per bond slot (SolidBonds' slot-major layout): the evaluation's terms, written by the
-    /// slot passes (solidSumSlotAt, solidForceSlotAt) and added up per particle in slot order
-    /// (solidSumGatherAt, solidBondForceGatherAt).
-    Double3* bond_term = nullptr;
     const Double3* fluid_force = nullptr;  ///< hydrodynamic force F_F->S, frozen over the sub-cycle [N]
     const std::uint16_t* body = nullptr;   ///< material index
     const VcpmMaterial* material = nullptr;
@@ -258,120 +253,67 @@ SEASPRING_HD inline Double3 pointLoadAt(const SolidState& st, std::uint32_t s, d
     return Double3{a.x + r.x * t, a.y + r.y * t, a.z + r.z * t};
 }
 
-/// One bond slot's part of pass 1 at positions `ep` (slot k of solid particle s, at p = ep[s],
-/// `crit` its material's critical stretch, out_s: p outside st.keep): decides the bond's breakage
-/// (the partner decides the mirror slot with the same bits; a bond with an end outside st.keep
-/// breaks too) and returns {its term of S_s (0 once broken), its strain, 1 when the intact bond
-/// is strained past kMaxBondStrain (else 0)}. `f`: time fraction for the clamp nodes.
-SEASPRING_HD inline Double3 bondSumTerm(std::uint32_t k, const Double3& p, bool out_s, double crit, const Double3* ep,
-                                        const SolidState& st, const SolidBonds& b, const ClampNodes& cn, double f) {
-    const std::uint32_t j = b.partner[k];
-    const Double3 pj = (b.flags[k] & kBondClamp) ? clampPosAt(cn, j, f) : ep[j];
-    double dx, dy, dz;
-    const double len = bondVector(p, pj, dx, dy, dz);
-    const double rest = b.rest[k];
-    std::uint8_t br = b.broken[k];
-    if (!br && (bondBreaks(len, rest, crit) || out_s || solidOutside(st.keep, pj))) {
-        br = 1;
-        b.broken[k] = 1;
-    }
-    const bool past = !br && bondPastBound(len, rest);
-    const double dl = halfElongation(len, rest);
-    return Double3{br ? 0.0 : (b.vw ? b.vw[k] * dl : dl), past ? bondStrain(len, rest) : 0.0, past ? 1.0 : 0.0};
-}
-
-/// Adds a slot's sum term to S (in slot order) and raises s's alarm for a bond past its bound
-/// (the first such slot, unless an alarm is raised already).
-SEASPRING_HD inline void addSumTerm(double& sum, const Double3& e, const SolidState& st, std::uint32_t s, double t) {
-    if (e.z != 0.0) raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, e.y, t);
-    sum += e.x;
-}
-
-/// Raises solid particle s's alarm for a position p that is not finite.
-SEASPRING_HD inline void positionAlarm(const SolidState& st, std::uint32_t s, const Double3& p, double t) {
-    if (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)) raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
-}
-
-/// Pass 1 of a force evaluation at positions `ep` in one function, for solid particle s: decides
-/// the breakage of its bonds (bondSumTerm) and returns S_s = sum of dl over its intact bonds.
-/// Raises s's alarm for a position that is not finite or an intact bond strained past
-/// kMaxBondStrain. The sub-cycle runs it as two passes with the same bits (solidSumSlotAt
-/// over the slots, then solidSumGatherAt); this form is the reference the tests call.
+/// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
+/// its bonds (the partner decides the mirror slot with the same bits; a bond with an end
+/// outside st.keep breaks too) and returns S_s = sum of dl over its intact bonds. `f`: time
+/// fraction for the clamp nodes. Raises s's alarm for a position that is not finite or an
+/// intact bond strained past kMaxBondStrain.
 SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st,
                                       const SolidBonds& b, const ClampNodes& cn, double f) {
     const Double3 p = ep[s];
     const double crit = st.material[st.body[s]].crit_stretch;
     const bool out_s = solidOutside(st.keep, p);
     const double t = st.t0 + f * st.span;
-    positionAlarm(st, s, p, t);
+    if (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)) raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
     const int nb = b.count[s];
-    double sum = 0.0;
-    for (int q = 0; q < nb; ++q)
-        addSumTerm(sum, bondSumTerm(std::uint32_t(q) * b.n + s, p, out_s, crit, ep, st, b, cn, f), st, s, t);
-    return sum;
-}
-
-/// Pass 1a, for bond slot k (particle k % b.n, its slot k / b.n; an unused slot does nothing):
-/// bondSumTerm into st.bond_term[k]. One thread per bond: the bonds' square roots run side by
-/// side instead of one after another.
-SEASPRING_HD inline void solidSumSlotAt(std::uint32_t k, const Double3* ep, const SolidState& st, const SolidBonds& b,
-                                        const ClampNodes& cn, double f) {
-    const std::uint32_t s = k % b.n;
-    if (k / b.n >= b.count[s]) return;
-    const Double3 p = ep[s];
-    st.bond_term[k] = bondSumTerm(k, p, solidOutside(st.keep, p), st.material[st.body[s]].crit_stretch, ep, st, b, cn, f);
-}
-
-/// Pass 1b, for solid particle s (after pass 1a): S_s from its slots' terms in slot order, the
-/// alarms as solidSumAt raises them.
-SEASPRING_HD inline double solidSumGatherAt(std::uint32_t s, const Double3* ep, const SolidState& st, const SolidBonds& b,
-                                            double f) {
-    const double t = st.t0 + f * st.span;
-    positionAlarm(st, s, ep[s], t);
-    const int nb = b.count[s];
-    double sum = 0.0;
-    for (int q = 0; q < nb; ++q) addSumTerm(sum, st.bond_term[std::uint32_t(q) * b.n + s], st, s, t);
-    return sum;
-}
-
-/// Pass 1b, for clamp node c (after pass 1 decided the states): S_c over its intact bonds.
-SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const SolidBonds& b,
-                                      const ClampNodes& cn, double f) {
-    const Double3 p = clampPosAt(cn, c, f);
-    const int nb = cn.count[c];
     double sum = 0.0;
     for (int q = 0; q < nb; ++q) {
-        const std::uint32_t k = std::uint32_t(q) * cn.n + c;
-        const std::uint32_t slot = cn.slot[k];
-        if (b.broken[slot]) continue;
+        const std::uint32_t k = std::uint32_t(q) * b.n + s;
+        const std::uint32_t j = b.partner[k];
+        const Double3 pj = (b.flags[k] & kBondClamp) ? clampPosAt(cn, j, f) : ep[j];
         double dx, dy, dz;
-        const double len = bondVector(p, ep[cn.partner[k]], dx, dy, dz);
-        sum += halfElongation(len, b.rest[slot]);
+        const double len = bondVector(p, pj, dx, dy, dz);
+        const double rest = b.rest[k];
+        std::uint8_t br = b.broken[k];
+        if (!br && (bondBreaks(len, rest, crit) || out_s || solidOutside(st.keep, pj))) {
+            br = 1;
+            b.broken[k] = 1;
+        }
+        if (!br && bondPastBound(len, rest)) raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, rest), t);
+        const double dl = halfElongation(len, rest);
+        sum += br ? 0.0 : (b.vw ? b.vw[k] * dl : dl);
     }
     return sum;
 }
 
-/// One intact bond slot's part of pass 2: the force on solid particle s (at p, material m, sum
-/// sum_s) along slot k at positions `ep`, from the sums of pass 1 (Eq. 12's term).
-SEASPRING_HD inline Double3 bondForceTerm(std::uint32_t k, const Double3& p, const VcpmMaterial& m, double sum_s,
-                                          const Double3* ep, const SolidState& st, const SolidBonds& b,
-                                          const ClampNodes& cn, double f) {
-    const std::uint32_t j = b.partner[k];
-    const bool clamp = (b.flags[k] & kBondClamp) != 0;
-    const Double3 pj = clamp ? clampPosAt(cn, j, f) : ep[j];
-    const double sum_j = clamp ? cn.sum[j] : st.sum[j];
-    double dx, dy, dz;
-    const double len = bondVector(p, pj, dx, dy, dz);
-    const double kb = b.kfac ? bondStiffness(m, b.flags[k]) * b.kfac[k] : bondStiffness(m, b.flags[k]);
-    const double si = b.vw ? b.vw[k] * sum_s : sum_s, sj = b.vw ? b.vw_partner[k] * sum_j : sum_j;
-    const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), si, sj) / len;
-    return Double3{fm * dx, fm * dy, fm * dz};
+/// Pass 1b, for clamp node c: S_c over its intact bonds. It decides each bond's breakage
+/// itself, with the bits solidSumAt decides it with at the solid end (the same length from
+/// either end, the solid particle's material and keep box), so it runs in the same pass as
+/// solidSumAt: b.broken[slot] read while the solid end may set it gives the same result
+/// either way (the old flag or'ed with the same test).
+SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const SolidState& st, const SolidBonds& b,
+                                      const ClampNodes& cn, double f) {
+    const Double3 p = clampPosAt(cn, c, f);
+    const bool out_c = solidOutside(st.keep, p);
+    const int nb = cn.count[c];
+    double sum = 0.0;
+    for (int q = 0; q < nb; ++q) {
+        const std::uint32_t k = std::uint32_t(q) * cn.n + c;
+        const std::uint32_t slot = cn.slot[k], s = cn.partner[k];
+        const Double3 ps = ep[s];
+        double dx, dy, dz;
+        const double len = bondVector(p, ps, dx, dy, dz);
+        const double rest = b.rest[slot];
+        if (b.broken[slot] || bondBreaks(len, rest, st.material[st.body[s]].crit_stretch) ||
+            solidOutside(st.keep, ps) || out_c)
+            continue;
+        sum += halfElongation(len, rest);
+    }
+    return sum;
 }
 
-/// Pass 2 in one function: the total bond force on solid particle s at positions `ep`, its
-/// intact slots' bondForceTerm summed in slot order. The sub-cycle runs it as a pass over the
-/// slots (solidForceSlotAt) and the sum inside the predictor and corrector
-/// (solidBondForceGatherAt), with the same bits; this form is the reference the tests call.
+/// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12), from the
+/// sums of pass 1.
 SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
                                              const SolidBonds& b, const ClampNodes& cn, double f) {
     const Double3 p = ep[s];
@@ -382,35 +324,18 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
     for (int q = 0; q < nb; ++q) {
         const std::uint32_t k = std::uint32_t(q) * b.n + s;
         if (b.broken[k]) continue;
-        const Double3 e = bondForceTerm(k, p, m, sum_s, ep, st, b, cn, f);
-        fx += e.x;
-        fy += e.y;
-        fz += e.z;
-    }
-    return Double3{fx, fy, fz};
-}
-
-/// Pass 2a, for bond slot k (as solidSumSlotAt; unused and broken slots do nothing):
-/// bondForceTerm into st.bond_term[k].
-SEASPRING_HD inline void solidForceSlotAt(std::uint32_t k, const Double3* ep, const SolidState& st, const SolidBonds& b,
-                                          const ClampNodes& cn, double f) {
-    const std::uint32_t s = k % b.n;
-    if (k / b.n >= b.count[s] || b.broken[k]) return;
-    st.bond_term[k] = bondForceTerm(k, ep[s], st.material[st.body[s]], st.sum[s], ep, st, b, cn, f);
-}
-
-/// Pass 2b, for solid particle s (after pass 2a): its total bond force, the intact slots'
-/// terms summed in slot order (the bits of solidBondForceAt).
-SEASPRING_HD inline Double3 solidBondForceGatherAt(std::uint32_t s, const SolidState& st, const SolidBonds& b) {
-    const int nb = b.count[s];
-    double fx = 0.0, fy = 0.0, fz = 0.0;
-    for (int q = 0; q < nb; ++q) {
-        const std::uint32_t k = std::uint32_t(q) * b.n + s;
-        if (b.broken[k]) continue;
-        const Double3 e = st.bond_term[k];
-        fx += e.x;
-        fy += e.y;
-        fz += e.z;
+        const std::uint32_t j = b.partner[k];
+        const bool clamp = (b.flags[k] & kBondClamp) != 0;
+        const Double3 pj = clamp ? clampPosAt(cn, j, f) : ep[j];
+        const double sum_j = clamp ? cn.sum[j] : st.sum[j];
+        double dx, dy, dz;
+        const double len = bondVector(p, pj, dx, dy, dz);
+        const double kb = b.kfac ? bondStiffness(m, b.flags[k]) * b.kfac[k] : bondStiffness(m, b.flags[k]);
+        const double si = b.vw ? b.vw[k] * sum_s : sum_s, sj = b.vw ? b.vw_partner[k] * sum_j : sum_j;
+        const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), si, sj) / len;
+        fx += fm * dx;
+        fy += fm * dy;
+        fz += fm * dz;
     }
     return Double3{fx, fy, fz};
 }
@@ -423,12 +348,12 @@ SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double
                    (fbond.z + ffluid.z) * m.inv_mass + gz - m.damp_rate * vel.z};
 }
 
-/// Predictor pass of a sub-step (Eqs. 20-21) for particle s: a^m at r^m (the bond force from
-/// solidForceSlotAt's terms at st.pos), then
+/// Predictor pass of a sub-step (Eqs. 20-21) for particle s: a^m at r^m, then
 /// v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m. A frozen particle (outside
 /// st.keep) stays where it is, at rest.
-SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b, double f,
-                                          double dt, double gx, double gy, double gz) {
+SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
     if (solidOutside(st.keep, st.pos[s])) {
         const Double3 rest{0, 0, 0};
         st.vel0[s] = rest;
@@ -436,7 +361,7 @@ SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st,
         st.pos_half[s] = st.pos[s];
         return;
     }
-    const Double3 fi = solidBondForceGatherAt(s, st, b), fl = pointLoadAt(st, s, f);
+    const Double3 fi = solidBondForceAt(s, st.pos, st, b, cn, f), fl = pointLoadAt(st, s, f);
     Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
     if (st.contact_force) {
         const Double3 fc = st.contact_force[s];
@@ -450,15 +375,16 @@ SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st,
     st.pos_half[s] = Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
 }
 
-/// Corrector pass (Eqs. 22-23): a^{m+1/2} at r^{m+1/2} (damping with v^{m+1/2}; bond force from
-/// solidForceSlotAt's terms at st.pos_half, load, hydrodynamic and contact forces), then
+/// Corrector pass (Eqs. 22-23): a^{m+1/2} at r^{m+1/2} (damping with v^{m+1/2}; bond, load,
+/// hydrodynamic and contact forces), then
 /// v^{m+1} = v^m + dt a^{m+1/2} and r^{m+1} = r^m + dt/2 (v^m + v^{m+1}). A particle outside
 /// st.keep (frozen at the predictor) stays; one that r^{m+1} takes outside freezes there.
 /// Raises s's alarm for a velocity that is not finite or faster than the material's max_speed.
-SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b, double f,
-                                          double dt, double gx, double gy, double gz) {
+SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
     if (solidOutside(st.keep, st.pos[s])) return;
-    const Double3 fi = solidBondForceGatherAt(s, st, b), fl = pointLoadAt(st, s, f);
+    const Double3 fi = solidBondForceAt(s, st.pos_half, st, b, cn, f), fl = pointLoadAt(st, s, f);
     Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
     if (st.contact_force) {
         const Double3 fc = st.contact_force[s];

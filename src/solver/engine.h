@@ -477,9 +477,7 @@ private:
         const SubCycleContact ct = subCycleContact();
         const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
                                  setup_.step.gx, setup_.step.gy, setup_.step.gz, ct};
-        // widest: the slot passes (or the sums, with more clamp nodes than unused slots)
-        const std::uint32_t slots = std::uint32_t(solid_.flags.size());
-        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, std::max(slots, solid_.n + solid_.nclamp), body);
+        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, solid_.n + solid_.nclamp, body);  // widest: the sums
     }
 
     /// The contact views of the solids' sub-cycle (off without contact).

@@ -26,7 +26,6 @@ struct SolidArrays {
     Buf<std::uint16_t> body;
     Buf<physics::VcpmMaterial> materials;
     Buf<physics::Double3> pos, pos_half, vel, vel0, fluid_force;
-    Buf<physics::Double3> bond_term;  ///< per bond slot: the evaluation's terms (scratch of the slot passes)
     Buf<physics::Double3> impulse;  ///< ledger: sum of F dt per particle [N s]
     Buf<physics::SolidAlarm> alarm; ///< blow-up alarms (physics/blowup_bounds.h)
     // Contact (empty without it; physics/solid_contact.h).
@@ -60,7 +59,6 @@ struct SolidArrays {
         assignFrom(vw, s.vw);
         assignFrom(vw_partner, s.vw_partner);
         assignFrom(broken, std::vector<std::uint8_t>(s.flags.size(), 0));
-        assignFrom(bond_term, std::vector<physics::Double3>(s.flags.size(), zero3));
         assignFrom(body, s.body);
         assignFrom(materials, s.materials);
         assignFrom(pos, s.pos);
@@ -104,7 +102,6 @@ struct SolidArrays {
         st.vel = vel.data();
         st.vel0 = vel0.data();
         st.sum = sum.data();
-        st.bond_term = bond_term.data();
         st.fluid_force = fluid_force.data();
         st.body = body.data();
         st.material = materials.data();
@@ -133,7 +130,6 @@ struct SolidArrays {
         b.kfac = kfac.empty() ? nullptr : kfac.data();
         b.vw = vw.empty() ? nullptr : vw.data();
         b.vw_partner = vw_partner.empty() ? nullptr : vw_partner.data();
-        b.rows = n > 0 ? std::uint32_t(flags.size() / n) : 0u;
         return b;
     }
 

@@ -3,19 +3,16 @@
 /// \brief The passes of the VCPM solids, one functor each over one function of physics/vcpm.h
 ///        or physics/solid_coupling.h, and the sub-cycle as one sequence of passes.
 ///
-/// A sub-step is eight passes, each needing the previous one complete: at r^m the sums' terms
-/// per bond slot, the sums per particle (with the clamp nodes' sums and, with contact, the
-/// contact force), the forces' terms per bond slot, the predictor (which adds up its force);
-/// the same at r^{m+1/2} with the corrector. One thread per bond in the slot passes: a
-/// particle's bonds are evaluated side by side (their square roots and divisions are the
-/// latency of a small solid's sub-step), then added up in slot order, the bits of the
-/// one-thread-per-particle sums (physics::solidSumAt, solidBondForceAt). SolidSubCycle writes that sequence
+/// A sub-step is four passes (sums at r^m, predictor, sums at r^{m+1/2}, corrector; the sums
+/// pass also takes the clamp nodes' sums and, with contact, the contact force), each needing
+/// the previous one complete. SolidSubCycle writes that sequence
 /// once; the execution policy's `sequence` runs it with a runner `run(n, pass)` that runs the
 /// pass for indices [0, n) and returns when all are done: an `omp for` inside one parallel
 /// region (CPU), one grid-wide launch per pass (GPU, large solids), or a block-stride loop and
 /// a barrier inside ONE single-block kernel (GPU, small solids: one launch per sub-cycle
-/// instead of 1 + 8 n). Every pass writes only its own index's entries, so each runner gives
-/// the same bits.
+/// instead of 1 + 4 n). Every pass writes only its own index's entries, so each runner gives
+/// the same bits (a clamp node reads a breakage flag that the bond's solid end may set in the
+/// same pass; physics::clampSumAt gets the same result from the old and the new flag).
 #pragma once
 
 #include <cstdint>
@@ -35,38 +32,20 @@ struct ClampMotion {
     physics::Double3* pos_end = nullptr;
 };
 
-/// The slot passes of an evaluation at positions `ep` (one index per bond slot,
-/// b.rows * b.n of them): the sums' terms, then (after the sums) the forces' terms.
-struct SolidSumSlotPass {
-    const physics::Double3* ep;
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f;
-    SEASPRING_HD void operator()(std::uint32_t k) const { physics::solidSumSlotAt(k, ep, st, b, cn, f); }
-};
-
-struct SolidForceSlotPass {
-    const physics::Double3* ep;
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f;
-    SEASPRING_HD void operator()(std::uint32_t k) const { physics::solidForceSlotAt(k, ep, st, b, cn, f); }
-};
-
 struct SolidPredictorPass {
     physics::SolidState st;
     physics::SolidBonds b;
+    physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
-    SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidPredictorAt(s, st, b, f, dt, gx, gy, gz); }
+    SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidPredictorAt(s, st, b, cn, f, dt, gx, gy, gz); }
 };
 
 struct SolidCorrectorPass {
     physics::SolidState st;
     physics::SolidBonds b;
+    physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
-    SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidCorrectorAt(s, st, b, f, dt, gx, gy, gz); }
+    SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidCorrectorAt(s, st, b, cn, f, dt, gx, gy, gz); }
 };
 
 struct SolidSlotPass {
@@ -100,10 +79,11 @@ struct SubCycleContact {
     physics::Double3* force = nullptr;
 };
 
-/// After SolidSumSlotPass: the sums S of the solid particles (indices [0, b.n):
-/// physics::solidSumGatherAt) and of the clamp nodes ([b.n, b.n + cn.n): physics::clampSumAt,
-/// which reads the breakage the slot pass decided); with contact, each solid particle's contact
-/// force too (it reads positions and velocities, which no part of this pass writes).
+/// The first pass of a force evaluation at positions `ep`: the sums S of the solid particles
+/// (indices [0, b.n): physics::solidSumAt, which decides the bonds' breakage) and of the clamp
+/// nodes ([b.n, b.n + cn.n): physics::clampSumAt decides its bonds' breakage with the same
+/// bits, so it needs no pass of its own); with contact, each solid particle's contact force
+/// too (it reads positions and velocities, which no part of this pass writes).
 struct SolidSumsPass {
     const physics::Double3* ep;
     physics::SolidState st;
@@ -113,10 +93,10 @@ struct SolidSumsPass {
     SubCycleContact ct;
     SEASPRING_HD void operator()(std::uint32_t i) const {
         if (i < b.n) {
-            st.sum[i] = physics::solidSumGatherAt(i, ep, st, b, f);
+            st.sum[i] = physics::solidSumAt(i, ep, st, b, cn, f);
             if (ct.on) ct.force[i] = physics::contactForceAt(i, ep, st, ct.w, ct.cp, ct.cl);
         } else {
-            cn.sum[i - b.n] = physics::clampSumAt(i - b.n, ep, b, cn, f);
+            cn.sum[i - b.n] = physics::clampSumAt(i - b.n, ep, st, b, cn, f);
         }
     }
 };
@@ -186,17 +166,13 @@ struct SolidSubCycle {
     SEASPRING_HD void operator()(Run& run) const {
         run(cn.n + (ct.on ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct});
         const double inv_n = 1.0 / double(n);
-        const std::uint32_t nsums = b.n + cn.n, nslots = b.rows * b.n;
+        const std::uint32_t nsums = b.n + cn.n;
         for (int m = 0; m < n; ++m) {
             const double f0 = double(m) * inv_n, fh = (double(m) + 0.5) * inv_n;
-            run(nslots, SolidSumSlotPass{st.pos, st, b, cn, f0});
             run(nsums, SolidSumsPass{st.pos, st, b, cn, f0, ct});
-            run(nslots, SolidForceSlotPass{st.pos, st, b, cn, f0});
-            run(b.n, SolidPredictorPass{st, b, f0, dt, gx, gy, gz});
-            run(nslots, SolidSumSlotPass{st.pos_half, st, b, cn, fh});
+            run(b.n, SolidPredictorPass{st, b, cn, f0, dt, gx, gy, gz});
             run(nsums, SolidSumsPass{st.pos_half, st, b, cn, fh, ct});
-            run(nslots, SolidForceSlotPass{st.pos_half, st, b, cn, fh});
-            run(b.n, SolidCorrectorPass{st, b, fh, dt, gx, gy, gz});
+            run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
         }
     }
 };

@@ -44,7 +44,7 @@ void bondForces(solver::SolidArrays<solver::HostBuffer>& a, const std::vector<Do
     const physics::SolidBonds b = a.bonds();
     physics::ClampNodes cn = a.clamps();
     for (std::uint32_t s = 0; s < b.n; ++s) st.sum[s] = physics::solidSumAt(s, st.pos, st, b, cn, 0.0);
-    for (std::uint32_t c = 0; c < cn.n; ++c) cn.sum[c] = physics::clampSumAt(c, st.pos, b, cn, 0.0);
+    for (std::uint32_t c = 0; c < cn.n; ++c) cn.sum[c] = physics::clampSumAt(c, st.pos, st, b, cn, 0.0);
     f.resize(b.n);
     for (std::uint32_t s = 0; s < b.n; ++s) f[s] = physics::solidBondForceAt(s, st.pos, st, b, cn, 0.0);
 }

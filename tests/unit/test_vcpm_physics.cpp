@@ -322,8 +322,7 @@ Oscillation oscillate(bool clamp, const VcpmMaterial& m, double dp, double a, do
     b.pos[b.n - 1].x += a;
     auto sums = [&](const Double3* ep) {
         for (std::uint32_t s = 0; s < b.n; ++s) b.sum[s] = solidSumAt(s, ep, st, sb, cn, 0.0);
-        for (std::uint32_t c = 0; c < cn.n; ++c) csum[c] = clampSumAt(c, ep, sb, cn, 0.0);
-        for (std::uint32_t k = 0; k < sb.rows * sb.n; ++k) solidForceSlotAt(k, ep, st, sb, cn, 0.0);
+        for (std::uint32_t c = 0; c < cn.n; ++c) csum[c] = clampSumAt(c, ep, st, sb, cn, 0.0);
     };
     Oscillation o;
     for (int m_ = 0; m_ <= steps; ++m_) {
@@ -335,9 +334,9 @@ Oscillation oscillate(bool clamp, const VcpmMaterial& m, double dp, double a, do
         o.energy.push_back(ke + (m.k_first + 2 * m.t_half) * e * e / 4);
         if (m_ == steps) break;
         sums(b.pos.data());
-        for (std::uint32_t s = 0; s < b.n; ++s) solidPredictorAt(s, st, sb, 0.0, dt, 0, 0, 0);
+        for (std::uint32_t s = 0; s < b.n; ++s) solidPredictorAt(s, st, sb, cn, 0.0, dt, 0, 0, 0);
         sums(b.pos_half.data());
-        for (std::uint32_t s = 0; s < b.n; ++s) solidCorrectorAt(s, st, sb, 0.0, dt, 0, 0, 0);
+        for (std::uint32_t s = 0; s < b.n; ++s) solidCorrectorAt(s, st, sb, cn, 0.0, dt, 0, 0, 0);
     }
     return o;
 }

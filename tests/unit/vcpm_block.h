@@ -36,7 +36,7 @@ struct Block {
     VcpmMaterial mat;
     std::uint32_t n;
     std::vector<Vec3i> site;
-    std::vector<Double3> ref, pos, pos_half, vel, vel0, ffluid, term;
+    std::vector<Double3> ref, pos, pos_half, vel, vel0, ffluid;
     std::vector<std::uint8_t> count, flags, broken;
     std::vector<std::uint32_t> partner, mirror;  // mirror: slot of the same bond at the partner
     std::vector<double> rest, sum;
@@ -91,7 +91,6 @@ struct Block {
             b.vw = vw.data();
             b.vw_partner = vw_partner.data();
         }
-        b.rows = n > 0 ? std::uint32_t(flags.size() / n) : 0u;
         return b;
     }
     SolidState state() {
@@ -101,8 +100,6 @@ struct Block {
         st.vel = vel.data();
         st.vel0 = vel0.data();
         st.sum = sum.data();
-        if (term.size() < flags.size()) term.resize(flags.size());  // the slot passes' scratch
-        st.bond_term = term.data();
         st.fluid_force = ffluid.data();
         st.body = body.data();
         st.material = &mat;
