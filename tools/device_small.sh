@@ -2,7 +2,9 @@
 # Runs ON the GPU machine (device tool) with build-dev carried: where a small case's step goes.
 # Antoci gate 2D and FlexStruc Liao 2D: phase timers (SEASPRING_TIMERS=1, the GPU synchronised
 # after each phase), and the GPU time and launches per kernel over 200 steps (Nsight Compute)
-# against the wall time of the same steps without the profiler.
+# against the wall time of the same steps without the profiler. Caches are not flushed between
+# kernels (--cache-control none): ncu's default flush gives cold-cache times, which for these
+# latency-bound kernels are up to 2x the real ones.
 # Env: SS_BIN (default build-dev/bin), CASES (default "ant liao"), W (work folder, default /tmp/w;
 # one per binary when their case formats differ).
 set -u
@@ -15,7 +17,7 @@ for c in ${CASES:-ant liao}; do
   echo "== $c"
   SEASPRING_TIMERS=1 $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "phase|Finished"
   $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "Finished"
-  ncu --clock-control none --metrics gpu__time_duration.sum --csv $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:200 $w/$c $w/o_p 2>/dev/null | grep -v '^==' >$w/ncu_$c.csv
+  ncu --clock-control none --cache-control none --metrics gpu__time_duration.sum --csv $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:200 $w/$c $w/o_p 2>/dev/null | grep -v '^==' >$w/ncu_$c.csv
   awk -F'","' 'NR > 1 { k = $5; gsub(/<unnamed>::|seaspring::|cuda::|solver::|physics::/, "", k); sub(/^void /, "", k);
       if (k ~ /^forEachKernel/) { sub(/^forEachKernel<[0-9]+, /, "", k) } sub(/[<(].*/, "", k);
       v = $NF; gsub(/[",]/, "", v); n[k]++; t[k] += v; T += v; N++ }

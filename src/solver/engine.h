@@ -470,7 +470,7 @@ private:
         cm.object = solid_.clamp_object.data();
         cm.pos_start = solid_.clamp_start.data();
         cm.pos_end = solid_.clamp_end.data();
-        if (solid_.nclamp > 0 && !motions.empty()) {
+        if (solid_.clamps_move && !motions.empty()) {  // fixed clamps read no motion
             assignFrom(solid_motions_, motions);
             cm.motions = solid_motions_.data();
         }

@@ -92,6 +92,9 @@ RunSummary Simulation::run() {
     bool warned_out = loop.warned_out;
     auto loopState = [&] { return LoopState{t, next_out, nextCheckpoint(t), step, warned_out}; };
     RunProgress progress(log_, opt_.quiet ? 0.0 : opt_.progress_interval, tmax, sum_.np);
+    // OUTDIR/TERMINATE is looked for after the first step, then at most every 0.2 s of wall
+    // time: a file-system call after every step is a measurable share of a small case's step.
+    Clock::time_point next_terminate_look = Clock::now();
     sum_.stop_reason = "TimeMax reached";
     while (t < tmax - 1e-12 * tmax) {
         if (max_steps >= 0 && step >= max_steps) {
@@ -132,7 +135,9 @@ RunSummary Simulation::run() {
             saveCheckpoint(loopState(), *stepper, ctx);
             next_checkpoint = nextCheckpoint(t);
         }
-        if (terminateRequested()) {  // DualSPHysics' TERMINATE file: save, then stop cleanly
+        const bool look = Clock::now() >= next_terminate_look;
+        if (look) next_terminate_look = Clock::now() + std::chrono::milliseconds(200);
+        if (look && terminateRequested()) {  // DualSPHysics' TERMINATE file: save, then stop cleanly
             saveCheckpoint(loopState(), *stepper, ctx);
             if (lastOutputTime() < t) output(t, step);
             sum_.stop_reason = "TERMINATE file in OUTDIR";

@@ -41,6 +41,7 @@ struct SolidArrays {
     Buf<std::uint32_t> clamp_partner, clamp_slot;
     Buf<physics::Double3> clamp_pos_initial, clamp_start, clamp_end;
     Buf<std::int16_t> clamp_object;
+    bool clamps_move = false;  ///< a clamp node belongs to a moving boundary (else no motion upload)
     Buf<double> clamp_sum;
     double t0 = 0, span = 0;  ///< the current sub-cycle's start time and length
     physics::SolidKeepBox keep;
@@ -90,6 +91,8 @@ struct SolidArrays {
         assignFrom(clamp_start, s.clamp_pos);
         assignFrom(clamp_end, s.clamp_pos);
         assignFrom(clamp_object, s.clamp_object);
+        clamps_move = false;
+        for (std::int16_t o : s.clamp_object) clamps_move = clamps_move || o >= 0;
         assignFrom(clamp_sum, std::vector<double>(nclamp, 0.0));
         assignFrom(load_force, s.load_force);
         assignFrom(load_rate, s.load_rate);
