@@ -18,31 +18,16 @@ shared="$root/build-dev/shared-cases"
 
 table="$out/parity.txt"
 : >"$table"
-parity() {  # name case_path nsteps extra-args...
-  local name=$1 kase=$2 n=$3; shift 3
-  local h=()
-  for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
-    rm -rf "$work/o_$name"/{Run.out,run.json,parts.xdmf,ledger.csv,data,vtk,gauges}  # an earlier run (seaspring refuses to mix)
-    # shellcheck disable=SC2086
-    "$bin/seaspring" $b -nsteps:"$n" -sv:none -progress:0 "$@" "$kase" "$work/o_$name" >"$work/$name.log" 2>&1 ||
-      { echo "FAILED $name $b"; tail -5 "$work/$name.log"; }
-    h+=("$(grep -o 'State hash: [0-9a-f]*' "$work/$name.log" | cut -d' ' -f3)")
-  done
-  local same=yes
-  for x in "${h[@]}"; do [[ "$x" == "${h[0]}" ]] || same=NO; done
-  printf '%-28s cpu1=%s cpu2=%s cpu16=%s gpu=%s identical=%s\n' "$name" "${h[@]}" "$same" | tee -a "$table"
-}
-"$bin/gencase" "$root/cases/dambreak3d/DamBreak3D_Def.xml" "$work/db3d" >/dev/null
-"$bin/gencase" "$shared/CaseDambreakVal2D_Def.xml" "$work/val2d" -dp:0.02 >/dev/null
-parity db3d_sym_wend_art_ddt3 "$work/db3d" 40 -symplectic -wendland -viscoart:0.1 -ddt:3
-parity db3d_verlet_cubic_lam_ddt1 "$work/db3d" 40 -verlet -cubic -viscolam:1e-6 -ddt:1
-parity db3d_sym_wend_sps_ddt2 "$work/db3d" 40 -symplectic -wendland -viscolamsps:1e-6 -ddt:2
-parity db3d_cells2h "$work/db3d" 40 -cellmode:full
-parity db3d_cells_h "$work/db3d" 40 -cellmode:h
-parity db3d_cells_third "$work/db3d" 40 -cellmode:third
-parity val2d_sym_wend_art_ddt3 "$work/val2d" 300 -symplectic -ddt:3
-parity val2d_verlet_cubic_sps_ddt0 "$work/val2d" 300 -verlet -cubic -viscolamsps:1e-6 -ddt:0
-cp "$work"/*.log "$out/" 2>/dev/null
+# The fluid rows of tools/hash_table.sh (every physics family, the cell modes) on each backend.
+for b in "-cpu -threads:1" "-cpu -threads:2" "-cpu -threads:16" "-gpu"; do
+  tag=${b//[^a-z0-9]/}
+  SHARED_CASES="$shared" "$root/tools/hash_table.sh" "$bin" "$out/hashes_$tag.txt" "$b" '^(db3d|val2d_)' >/dev/null
+done
+names() { awk '{ print $1, $2 }' "$1"; }  # name and state hash (a gauge digest may follow)
+paste -d' ' <(names "$out/hashes_cputhreads1.txt") <(names "$out/hashes_cputhreads2.txt") \
+  <(names "$out/hashes_cputhreads16.txt") <(names "$out/hashes_gpu.txt") |
+  awk '{ same = ($2 == $4 && $2 == $6 && $2 == $8) ? "yes" : "NO";
+         printf "%-28s cpu1=%s cpu2=%s cpu16=%s gpu=%s identical=%s\n", $1, $2, $4, $6, $8, same }' >"$table"
 echo "== parity =="; cat "$table"
 [[ -n "${PARITY_ONLY:-}" ]] && exit 0
 bench() {  # label bin-folder args...

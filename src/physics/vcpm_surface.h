@@ -18,7 +18,9 @@
 /// a partner lacks bonds. Clamp nodes count as complete sites.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <vector>
 
@@ -162,15 +164,49 @@ inline std::vector<double> volumetricWeights(const std::vector<Double3>& r, int 
 /// Hessian of U in the particles' positions). Stronger springs and weighted volumetric sums at
 /// the surface raise lambda_max above the plain bulk lattice's, for which VcpmDtCoef (0.8) is
 /// calibrated: the 2D Antoci gate, 2 particles thick (every site a face site), blew up at 0.8
-/// with the correction and ran at 0.3. Gershgorin's bound lambda_max <= max_row sum_col |K|
-/// gives the margin: linearised, with e_IJ = |r_IJ| - L0 and b_IJ the unit vector u_IJ = (r_J -
-/// r_I)/|r_J - r_I| placed -u at I and +u at J (e_IJ = b_IJ . x),
-///     U = sum_bonds k_IJ/4 e_IJ^2 + sum_sites t_half/4 (sum_J w_IJ e_IJ)^2,
-///     K = sum_bonds k_IJ/2 b b^T + sum_sites t_half/2 g_I g_I^T,   g_I = sum_J w_IJ b_IJ,
-/// so each rank-1 term c v v^T adds |c| |v_a| ||v||_1 to row a (rigid clamp nodes carry no
-/// rows). The sub-step is scaled by sqrt(R_bulk / R_max) when the corrected lattice's largest
-/// row sum R_max exceeds the plain bulk site's R_bulk (never above 1).
-///
+/// with the correction and ran at 0.3. Linearised, with e_IJ = |r_IJ| - L0 and b_IJ the unit
+/// vector u_IJ = (r_J - r_I)/|r_J - r_I| placed -u at I and +u at J (e_IJ = b_IJ . x),
+///     U = sum_bonds k_IJ/4 e_IJ^2 + sum_sites t_half/4 (sum_J w_IJ e_IJ)^2.
+/// The body's lambda_max comes from the solver's own force functions (solver/solid_stability.h);
+/// the plain bulk lattice's is this function: with a plane wave x_I = a exp(i q.R_I) the
+/// energy per site is 1/2 a^H D(q) a,
+///     D(q) = sum_J k_J sin^2(q.d_J / 2) u_J u_J^T + t_half/2 g g^H,  g = sum_J u_J (exp(i q.d_J) - 1),
+/// over the stencil's offsets d_J (units of dp, unit vectors u_J, stiffnesses k_J), and
+/// lambda_max = max over q of D(q)'s largest eigenvalue: here on a grid of the Brillouin zone
+/// (64 x 64 in 2D, 32^3 in 3D, the zone's corners and edge midpoints included, where the
+/// largest lie). A grid maximum is never above the true one, so the sub-step it sets errs
+/// on the short side.
+inline double plainBulkLargestStiffness(int dim, double k_first, double k_second, double t_half) {
+    std::vector<Double3> d;
+    std::vector<std::uint8_t> second;
+    latticeStencil(dim, d, second);
+    const int n = dim == 2 ? 64 : 32;
+    const double pi = 3.14159265358979323846;
+    double best = 0.0;
+    for (int a = 0; a < n; ++a)
+        for (int b = 0; b < (dim == 3 ? n : 1); ++b)
+            for (int c = 0; c < n; ++c) {
+                const double qx = 2 * pi * a / n, qy = dim == 3 ? 2 * pi * b / n : 0.0, qz = 2 * pi * c / n;
+                Eigen::Matrix3cd D = Eigen::Matrix3cd::Zero();
+                Eigen::Vector3cd g = Eigen::Vector3cd::Zero();
+                for (std::size_t j = 0; j < d.size(); ++j) {
+                    const double len = std::sqrt(d[j].x * d[j].x + d[j].y * d[j].y + d[j].z * d[j].z);
+                    const Eigen::Vector3d u(d[j].x / len, d[j].y / len, d[j].z / len);
+                    const double qd = qx * d[j].x + qy * d[j].y + qz * d[j].z, sn = std::sin(0.5 * qd);
+                    D += ((second[j] ? k_second : k_first) * sn * sn * (u * u.transpose())).cast<std::complex<double>>();
+                    g += u.cast<std::complex<double>>() * (std::complex<double>(std::cos(qd), std::sin(qd)) - 1.0);
+                }
+                D += (0.5 * t_half) * (g * g.adjoint());
+                best = std::max(best, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3cd>(D, Eigen::EigenvaluesOnly)
+                                          .eigenvalues()
+                                          .maxCoeff());
+            }
+    return best;
+}
+
+/// Gershgorin's bound (VcpmSubStepBound 0): lambda_max <= the largest absolute row sum of K,
+/// where K = sum_bonds k_IJ/2 b b^T + sum_sites t_half/2 g_I g_I^T, g_I = sum_J w_IJ b_IJ, and
+/// each rank-1 term c v v^T adds |c| |v_a| ||v||_1 to row a (rigid clamp nodes carry no rows).
 /// R_bulk, component c, of a complete site of the plain lattice (the stencil's unit vectors u_J
 /// and stiffnesses k_J): its springs sum_J k_J |u_J,c| ||u_J||_1 (a bond's term reaches both
 /// ends), its own volumetric term nothing (sum_J u_J = 0), and each neighbour's

@@ -207,11 +207,11 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
             s.clamp_slot[k] = l[q].second;
         }
     }
-    if (c.params.vcpm_surface_correction) surfaceCorrection(s);
+    if (c.params.vcpm_surface_correction) surfaceCorrection(s, c.params.vcpm_substep_bound);
     return s;
 }
 
-void surfaceCorrection(SolidSetup& s) {
+void surfaceCorrection(SolidSetup& s, int substep_bound) {
     const std::uint32_t n = s.nsolid;
     const int dim = s.dim;
     // The rest vector and stiffness of each bond of particle r.
@@ -315,7 +315,7 @@ void surfaceCorrection(SolidSetup& s) {
         }
     }
     // The corrected lattice's sub-step (solid_stability.h), with contact's limit kept.
-    s.dt_scale = correctedSubStepScales(s);
+    s.dt_scale = correctedSubStepScales(s, substep_bound);
     double dt = s.contact_on ? s.contact_dt : 1e300;
     for (std::size_t b = 0; b < s.materials.size(); ++b) {
         dt = std::min(dt, s.elastic_dt[b] * s.dt_scale[b]);

@@ -67,8 +67,8 @@ SolidSetup makeSolidSetup(const SolverCase& c);
 
 /// VcpmSurfaceCorrection: fills `kfac`, `vw` and `vw_partner` (physics/vcpm_surface.h) from
 /// the bonds and the particles' initial positions, and scales each body's sub-step by the
-/// corrected lattice's stability margin (solid_stability.h).
-void surfaceCorrection(SolidSetup& s);
+/// corrected lattice's stability margin (solid_stability.h; `substep_bound`: VcpmSubStepBound).
+void surfaceCorrection(SolidSetup& s, int substep_bound = 0);
 
 /// Broken-bond count of every solid particle (host, from the slot states).
 std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken);

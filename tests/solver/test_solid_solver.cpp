@@ -426,7 +426,7 @@ TEST(SolidSolver, SurfaceCorrectionScalesTheSubStepToTheStiffestSite) {
     EXPECT_LT(f, 1.0);
     EXPECT_EQ(s.dt, s.elastic_dt[0] * f);
     for (double& k : s.kfac) k *= 4.0;
-    const double f4 = solver::correctedSubStepScales(s)[0];
+    const double f4 = solver::correctedSubStepScales(s, 0)[0];
     std::printf("with every spring x 4: %.4f\n", f4);
     EXPECT_LT(f4, f);
 }

@@ -113,6 +113,9 @@ TEST(GencaseLimits, RejectsWhatTheSolverWouldReject) {
                "<parameter> key=\"TimeOut\" value=\"0\": must be > 0");
     EXPECT_HAS(errorWith("step", "<parameter key=\"Visco\"", "<parameter key=\"StepAlgorithm\" value=\"7\"/><parameter key=\"Visco\""),
                "key=\"StepAlgorithm\" value=\"7\": is not supported by seaspring");
+    EXPECT_HAS(errorWith("bound", "<parameter key=\"Visco\"",
+                         "<parameter key=\"VcpmSubStepBound\" value=\"2\"/><parameter key=\"Visco\""),
+               "key=\"VcpmSubStepBound\" value=\"2\": is not supported by seaspring (supported: 0 Gershgorin");
     EXPECT_HAS(errorWith("cfl", "<cflnumber value=\"0.2\" />", "<cflnumber value=\"5\" />"),
                "<cflnumber> value=5: must lie in (0, 1]");
     // gravity -1e300 gave infinite constants and exit 0.
