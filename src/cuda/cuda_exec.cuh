@@ -6,6 +6,7 @@
 ///        Everything runs on the default stream, in issue order.
 #pragma once
 
+#include <cub/block/block_reduce.cuh>
 #include <cub/device/device_radix_sort.cuh>
 
 #include <algorithm>
@@ -48,18 +49,6 @@ constexpr int kReduceThreads = 256;
 /// Elements per thread below which a reduction takes fewer blocks than its maximum.
 constexpr std::uint32_t kReducePerThread = 1;
 
-/// combine() of a block's values in a fixed tree (every thread calls it; all get the result).
-template <class T, class C>
-__device__ T blockTree(T m, T* sh, const C& combine) {
-    sh[threadIdx.x] = m;
-    __syncthreads();
-    for (unsigned s = blockDim.x / 2; s > 0; s >>= 1) {
-        if (threadIdx.x < s) sh[threadIdx.x] = combine(sh[threadIdx.x], sh[threadIdx.x + s]);
-        __syncthreads();
-    }
-    return sh[0];
-}
-
 /// *p read past the L1 cache (ld.global.cg, word by word): what another block wrote before a
 /// __threadfence is seen (the CUDA guide's last-block pattern reads through volatile).
 template <class T>
@@ -72,19 +61,22 @@ __device__ T loadCoherent(const T* p) {
     return r;
 }
 
-/// Reduction in one launch: each block combines a grid-stride share of [b, e) in a fixed
-/// tree into parts[block]; the last block to finish (an integer ticket, `done`, reset for the
+/// Reduction in one launch: each block combines a grid-stride share of [b, e) (CUB's block
+/// reduction) into parts[block]; the last block to finish (an integer ticket, `done`, reset for the
 /// next call) combines the blocks' results into parts[gridDim.x]. Only exact combines are used
 /// (see CudaExec::reduce), so which block comes last changes nothing.
 template <class T, class F, class C>
 __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, std::uint32_t e, T init, F f,
                                                               C combine, T* parts, unsigned* done) {
-    __shared__ T sh[kReduceThreads];
+    // A block's values combined by CUB (warp shuffles, then the warps' results): a fixed shape,
+    // and only exact combines are used, so the result is the same in any order.
+    using BlockReduce = cub::BlockReduce<T, kReduceThreads, cub::BLOCK_REDUCE_WARP_REDUCTIONS>;
+    __shared__ typename BlockReduce::TempStorage tmp;
     __shared__ bool last;
     T m = init;
     for (std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x; i < e; i += gridDim.x * blockDim.x)
         m = combine(m, f(i));
-    m = blockTree(m, sh, combine);
+    m = BlockReduce(tmp).Reduce(m, combine);  // valid in thread 0
     if (threadIdx.x == 0) {
         parts[blockIdx.x] = m;
         __threadfence();  // the part is visible to every block before the ticket is taken
@@ -95,7 +87,7 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     __threadfence();
     T r = init;
     for (std::uint32_t k = threadIdx.x; k < gridDim.x; k += blockDim.x) r = combine(r, loadCoherent(parts + k));
-    r = blockTree(r, sh, combine);
+    r = BlockReduce(tmp).Reduce(r, combine);  // tmp is free again: the barrier above follows its last use
     if (threadIdx.x == 0) {
         parts[gridDim.x] = r;
         *done = 0u;
