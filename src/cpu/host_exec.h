@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ public:
     /// f(i) for i in [b, e), spread as Launch says (launch.h).
     template <class Launch, class F>
     void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
+        if (gateClosed()) return;
         if constexpr (Launch::kCpuChunk == 0) {
 #pragma omp parallel for num_threads(threads_) schedule(static)
             for (std::int64_t i = b; i < std::int64_t(e); ++i) f(std::uint32_t(i));
@@ -47,6 +49,7 @@ public:
     template <class LaunchA, class LaunchB, class FA, class FB>
     void forEachIndependent(std::uint32_t ba, std::uint32_t ea, const FA& fa, std::uint32_t bb, std::uint32_t eb,
                             const FB& fb) const {
+        if (gateClosed()) return;
         static_assert(LaunchA::kCpuChunk > 0 && LaunchB::kCpuChunk > 0, "dynamic schedules only");
 #pragma omp parallel num_threads(threads_)
         {
@@ -62,6 +65,7 @@ public:
     /// depends on the thread count, cannot change the result.
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
+        if (gateClosed()) return init;
         T total = init;
 #pragma omp parallel num_threads(threads_)
         {
@@ -80,6 +84,7 @@ public:
     struct Deferred {
         T value{};
         T get() const { return value; }
+        const T* device() const { return &value; }  ///< what a gate reads
     };
     /// reduce() into `out`, for out.get() later (the GPU's version does not wait for it).
     template <class T, class F, class C>
@@ -91,6 +96,7 @@ public:
     /// parallel region sharing each pass (`omp for`, whose implied barrier orders the passes).
     template <class Body>
     void sequence(std::uint64_t /*work*/, std::uint32_t /*widest*/, const Body& body) const {
+        if (gateClosed()) return;
 #pragma omp parallel num_threads(threads_)
         {
             TeamRun run;
@@ -103,6 +109,7 @@ public:
     /// not needed here). The result is in keys and perm.
     void sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* /*perm_alt*/,
                    std::uint32_t b, std::uint32_t e) const {
+        ungated("sortPairs");
         const std::uint64_t* k = keys;
         std::sort(perm + b, perm + e, [k](std::uint32_t x, std::uint32_t y) { return k[x] < k[y]; });
         const std::uint32_t* p = perm;
@@ -115,16 +122,26 @@ public:
 
     /// First index in [b, e) of sorted keys whose key is >= value.
     std::uint32_t lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e, std::uint64_t value) const {
+        ungated("lowerBound");
         return std::uint32_t(std::lower_bound(keys + b, keys + e, value) - keys);
     }
 
     template <typename T>
     void copy(T* dst, const T* src, std::size_t n) const {
+        ungated("copy");
         std::copy(src, src + n, dst);
     }
     void synchronize() const {}
 
+    /// As CudaExec::gate: the passes run under a set gate do nothing when *g is non-zero (read
+    /// when each pass starts, as the GPU's kernels do).
+    void gate(const std::uint32_t* g) { gate_ = g; }
+
 private:
+    bool gateClosed() const { return gate_ != nullptr && *gate_ != 0u; }
+    void ungated(const char* what) const {
+        if (gate_ != nullptr) throw std::logic_error(std::string("HostExec: ") + what + " run under a gate");
+    }
     struct TeamRun {
         template <class F>
         void operator()(std::uint32_t n, const F& f) const {
@@ -133,6 +150,7 @@ private:
         }
     };
     int threads_;
+    const std::uint32_t* gate_ = nullptr;
 };
 
 }  // namespace seaspring::cpu

@@ -3,6 +3,8 @@
 /// \brief The non-template parts of the CUDA execution policy (cuda_exec.cuh).
 #include "cuda/cuda_exec.cuh"
 
+#include <stdexcept>
+
 namespace seaspring::cuda {
 
 __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
@@ -50,8 +52,13 @@ void CudaExec::prepareSort(std::size_t n) {
     sort_temp_.resize(temp > 0 ? temp : 1);
 }
 
+void CudaExec::ungated(const char* what) const {
+    if (gate_ != nullptr) throw std::logic_error(std::string("CudaExec: ") + what + " launched under a gate");
+}
+
 void CudaExec::sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* perm_alt,
                          std::uint32_t b, std::uint32_t e) const {
+    ungated("sortPairs");
     if (e <= b) return;
     std::size_t temp = sort_temp_.size();
     cub::DoubleBuffer<std::uint64_t> k(keys + b, keys_alt + b);
@@ -63,6 +70,7 @@ void CudaExec::sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint
 
 std::uint32_t CudaExec::lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e,
                                    std::uint64_t value) const {
+    ungated("lowerBound");
     if (e <= b) return b;
     lowerBoundKernel<<<1, 1>>>(b, e, keys, value, lower_bound_.data());
     SEASPRING_CUDA_LAUNCH_CHECK();

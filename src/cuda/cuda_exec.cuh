@@ -3,7 +3,8 @@
 /// \brief The CUDA execution policy of the solver's engine (solver/engine.h): device memory
 ///        (DeviceBuffer), passes as kernel launches of one thread per index, the radix sort
 ///        (CUB), fixed-shape reductions, and the single-block launch of small pass sequences.
-///        Everything runs on the default stream, in issue order.
+///        Everything runs on the default stream, in issue order. A gate (CudaExec::gate) makes
+///        the kernels launched under it do nothing when a device word is set.
 #pragma once
 
 #include <cub/block/block_reduce.cuh>
@@ -22,9 +23,14 @@
 
 namespace seaspring::cuda {
 
+/// Whether a launch under `gate` is to do nothing (null: no gate; CudaExec::gate).
+__device__ inline bool gateClosed(const std::uint32_t* gate) { return gate != nullptr && *gate != 0u; }
+
 /// One thread per index of [b, e).
 template <int kThreads, class F>
-__global__ void __launch_bounds__(kThreads) forEachKernel(std::uint32_t b, std::uint32_t e, F f) {
+__global__ void __launch_bounds__(kThreads) forEachKernel(std::uint32_t b, std::uint32_t e, F f,
+                                                          const std::uint32_t* gate) {
+    if (gateClosed(gate)) return;
     const std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x;
     if (i < e) f(i);
 }
@@ -35,7 +41,9 @@ __global__ void __launch_bounds__(kThreads) forEachKernel(std::uint32_t b, std::
 template <int kThreads, class FA, class FB>
 __global__ void __launch_bounds__(kThreads) forEachTwoKernel(std::uint32_t ba, std::uint32_t ea, FA fa,
                                                              std::uint32_t blocks_a, std::uint32_t bb,
-                                                             std::uint32_t eb, FB fb) {
+                                                             std::uint32_t eb, FB fb,
+                                                             const std::uint32_t* gate) {
+    if (gateClosed(gate)) return;
     if (blockIdx.x < blocks_a) {
         const std::uint32_t i = ba + blockIdx.x * blockDim.x + threadIdx.x;
         if (i < ea) fa(i);
@@ -63,17 +71,20 @@ __device__ T loadCoherent(const T* p) {
 
 /// Reduction in one launch: each block combines a grid-stride share of [b, e) (CUB's block
 /// reduction) into parts[block]; the last block to finish (an integer ticket, `done`, reset for the
-/// next call) combines the blocks' results into parts[gridDim.x]. Only exact combines are used
-/// (see CudaExec::reduce), so which block comes last changes nothing.
+/// next call) combines the blocks' results into *out. Only exact combines are used (see
+/// CudaExec::reduce), so which block comes last changes nothing. Under a closed gate the result
+/// is `init` and f is not called.
 template <class T, class F, class C>
 __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, std::uint32_t e, T init, F f,
-                                                              C combine, T* parts, unsigned* done) {
+                                                              C combine, T* parts, unsigned* done, T* out,
+                                                              const std::uint32_t* gate) {
     // A block's values combined by CUB (warp shuffles, then the warps' results): a fixed shape,
     // and only exact combines are used, so the result is the same in any order.
     using BlockReduce = cub::BlockReduce<T, kReduceThreads, cub::BLOCK_REDUCE_WARP_REDUCTIONS>;
     __shared__ typename BlockReduce::TempStorage tmp;
     __shared__ bool last;
     T m = init;
+    if (gateClosed(gate)) e = b;
     for (std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x; i < e; i += gridDim.x * blockDim.x)
         m = combine(m, f(i));
     m = BlockReduce(tmp).Reduce(m, combine);  // valid in thread 0
@@ -89,7 +100,7 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     for (std::uint32_t k = threadIdx.x; k < gridDim.x; k += blockDim.x) r = combine(r, loadCoherent(parts + k));
     r = BlockReduce(tmp).Reduce(r, combine);  // tmp is free again: the barrier above follows its last use
     if (threadIdx.x == 0) {
-        parts[gridDim.x] = r;
+        *out = r;
         *done = 0u;
     }
 }
@@ -98,15 +109,17 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
 __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
                                  std::uint32_t* out);
 
-/// A reduction's result on its way to the host (CudaExec::reduceDeferred): an asynchronous
-/// copy into pinned memory and an event. get() waits for the event; when a later readback has
-/// synchronised the device in the meantime, it does not wait at all.
+/// A reduction's result on its way to the host (CudaExec::reduceDeferred): in a device word
+/// of its own (device(): what a gate reads), then an asynchronous copy into pinned memory and
+/// an event. get() waits for the event; when a later readback has synchronised the device in
+/// the meantime, it does not wait at all.
 template <class T>
 class DeferredValue {
 public:
     DeferredValue() {
         SEASPRING_CUDA_CHECK(cudaMallocHost(reinterpret_cast<void**>(&host_), sizeof(T)));
         SEASPRING_CUDA_CHECK(cudaEventCreateWithFlags(&done_, cudaEventDisableTiming));
+        dev_.resize(1);
     }
     ~DeferredValue() {
         cudaEventDestroy(done_);
@@ -118,11 +131,14 @@ public:
         SEASPRING_CUDA_CHECK(cudaEventSynchronize(done_));
         return *host_;
     }
+    /// The value on the device (set when the reduction's kernel ends).
+    const T* device() const { return dev_.data(); }
 
 private:
     friend class CudaExec;
     T* host_ = nullptr;
     cudaEvent_t done_ = nullptr;
+    DeviceBuffer<T> dev_;
 };
 
 /// Threads of the single-block sequence kernel (block-stride loops over the indices).
@@ -139,7 +155,8 @@ struct BlockRun {
 };
 
 template <class Body>
-__global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(Body body) {
+__global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(Body body, const std::uint32_t* gate) {
+    if (gateClosed(gate)) return;
     BlockRun run;
     body(run);
 }
@@ -170,7 +187,7 @@ public:
     void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
         if (e <= b) return;
         constexpr int kT = Launch::kGpuThreads;
-        forEachKernel<kT, F><<<unsigned((std::uint64_t(e - b) + kT - 1) / kT), kT>>>(b, e, f);
+        forEachKernel<kT, F><<<unsigned((std::uint64_t(e - b) + kT - 1) / kT), kT>>>(b, e, f, gate_);
         SEASPRING_CUDA_LAUNCH_CHECK();
     }
 
@@ -184,7 +201,7 @@ public:
             if (ea > ba && eb > bb) {
                 const std::uint32_t blocks_b = std::uint32_t((std::uint64_t(eb - bb) + kT - 1) / kT);
                 const std::uint32_t blocks_a = std::uint32_t((std::uint64_t(ea - ba) + kT - 1) / kT);
-                forEachTwoKernel<kT, FB, FA><<<blocks_a + blocks_b, kT>>>(bb, eb, fb, blocks_b, ba, ea, fa);
+                forEachTwoKernel<kT, FB, FA><<<blocks_a + blocks_b, kT>>>(bb, eb, fb, blocks_b, ba, ea, fa, gate_);
                 SEASPRING_CUDA_LAUNCH_CHECK();
                 return;
             }
@@ -203,7 +220,7 @@ public:
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
         static_assert(sizeof(T) <= kReadbackBytes, "a reduction value fits the pinned readback");
-        const T* result = launchReduce(b, e, init, f, combine);
+        const T* result = launchReduce(b, e, init, f, combine, static_cast<T*>(nullptr));
         SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), result, sizeof(T), cudaMemcpyDeviceToHost));
         SEASPRING_CUDA_CHECK(cudaStreamSynchronize(0));
         T r;
@@ -211,10 +228,11 @@ public:
         return r;
     }
 
-    /// reduce() without waiting: the result follows the kernel into `out` (out.get() waits).
+    /// reduce() without waiting: the result goes to out.device() and follows the kernel to the
+    /// host (out.get() waits).
     template <class T, class F, class C>
     void reduceDeferred(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, Deferred<T>& out) const {
-        const T* result = launchReduce(b, e, init, f, combine);
+        const T* result = launchReduce(b, e, init, f, combine, out.dev_.data());
         SEASPRING_CUDA_CHECK(cudaMemcpyAsync(out.host_, result, sizeof(T), cudaMemcpyDeviceToHost));
         SEASPRING_CUDA_CHECK(cudaEventRecord(out.done_));
     }
@@ -226,7 +244,7 @@ public:
         if (work <= block_max_) {
             // Only as many warps as the widest pass needs: the barriers then wait for fewer warps.
             const unsigned threads = unsigned(std::min<std::uint32_t>(kSequenceBlockThreads, (widest + 31u) / 32u * 32u));
-            sequenceBlockKernel<Body><<<1, threads > 0 ? threads : 32u>>>(body);
+            sequenceBlockKernel<Body><<<1, threads > 0 ? threads : 32u>>>(body, gate_);
             SEASPRING_CUDA_LAUNCH_CHECK();
             return;
         }
@@ -244,23 +262,34 @@ public:
 
     template <typename T>
     void copy(T* dst, const T* src, std::size_t n) const {
+        ungated("copy");
         if (n > 0) SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst, src, n * sizeof(T), cudaMemcpyDeviceToDevice));
     }
     void synchronize() const { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
 
+    /// From now on, until gate(nullptr), every forEach, forEachIndependent, reduce and sequence
+    /// launch does nothing when *g (a device word, e.g. a Deferred's device()) is non-zero when
+    /// it runs; a reduction then gives `init`. Copies, sorts and searches cannot be gated:
+    /// they throw while a gate is set.
+    void gate(const std::uint32_t* g) { gate_ = g; }
+
 private:
-    /// Launches the reduction; returns where its result will be on the device.
+    /// Throws when a gate is set (what cannot be gated).
+    void ungated(const char* what) const;
+    /// Launches the reduction; returns where its result will be on the device (`out`, or the
+    /// scratch's last slot when null).
     template <class T, class F, class C>
-    const T* launchReduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
+    const T* launchReduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, T* out) const {
         const std::uint64_t per_block = std::uint64_t(kReduceThreads) * kReducePerThread;
         const unsigned blocks = unsigned(std::max<std::uint64_t>(
             1, std::min<std::uint64_t>(reduce_blocks_, (std::uint64_t(e > b ? e - b : 0) + per_block - 1) / per_block)));
         const std::size_t need = sizeof(T) * (blocks + 1);
         if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
         T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
-        reduceKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data());
+        if (out == nullptr) out = parts + blocks;
+        reduceKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data(), out, gate_);
         SEASPRING_CUDA_LAUNCH_CHECK();
-        return parts + blocks;
+        return out;
     }
 
     struct GridRun {
@@ -282,6 +311,7 @@ private:
     };
     std::unique_ptr<void, FreeHost> readback_;  ///< pinned host memory for the readbacks (kReadbackBytes)
     std::uint32_t block_max_ = kSequenceBlockMaxDefault;
+    const std::uint32_t* gate_ = nullptr;  ///< see gate()
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
     DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)
     mutable DeviceBuffer<std::uint32_t> lower_bound_;

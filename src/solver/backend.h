@@ -119,6 +119,19 @@ public:
     /// With a skin (CellGrid::skinf > 0) it only refreshes PosCell while every particle stays
     /// within the skin of the cell it was sorted into and none was excluded (cell_grid.h).
     virtual void divide(bool keep_step_start) = 0;
+    /// divide(), then the next force evaluation launched at once, without waiting for the
+    /// divide's verdict (sort or not): its passes are gated on it, so a sort makes them do
+    /// nothing. The host then goes on while the device works; computeForces() takes the result
+    /// (sorting and evaluating again when the verdict was a sort), and activeFluid() and
+    /// gauges() settle the verdict first. Until computeForces(), nothing may change the state
+    /// (the methods that would, throw std::logic_error), and a download sees the evaluation's
+    /// own writes (the SPS stress, mDBC's boundary values, the solids' hydrodynamic force):
+    /// call it only where the state at this step's end is not saved or written out
+    /// (time_steppers.h, StepWindow::ahead_before). The bits of the run are those of
+    /// divide() then computeForces().
+    virtual void divideThenForces(bool keep_step_start) = 0;
+    /// Whether a force evaluation launched by divideThenForces waits for computeForces().
+    virtual bool forcesAhead() const = 0;
     /// Divides so far and how many of them sorted.
     virtual DivideCounts divideCounts() const = 0;
     /// Places moving boundaries (pose now, velocity over the coming interval).
@@ -163,7 +176,7 @@ public:
     /// ... answered for the current state (after divide).
     virtual void gauges(GaugeResults& out) = 0;
     /// Active fluid particles now.
-    virtual std::uint32_t activeFluid() const = 0;
+    virtual std::uint32_t activeFluid() = 0;
     /// Waits for queued device work (phase timers only; the CPU backend has none).
     virtual void synchronize() {}
     virtual void download(HostState& out) = 0;

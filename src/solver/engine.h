@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -42,6 +43,7 @@ public:
     int threads() const override { return exec_.threads(); }
 
     void init(const BackendSetup& s) override {
+        dropForcesAhead();
         setup_ = s;
         sorted_ = false;
         counts_ = DivideCounts{};
@@ -83,13 +85,39 @@ public:
     }
 
     void divide(bool keep_step_start) override {
+        noForcesAhead("divide");
         ++counts_.divides;
-        if (sorted_ && setup_.grid.skinf > 0.f) {
-            // Only moving boundaries and solids move in the boundary block.
-            const std::uint32_t b = setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_;
-            if (exec_.reduce(b, nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid}, OrCombine{}) == 0u)
-                return;
+        if (refreshes() && exec_.reduce(refreshBegin(), nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid},
+                                        OrCombine{}) == 0u)
+            return;
+        sortAll(keep_step_start);
+    }
+
+    void divideThenForces(bool keep_step_start) override {
+        noForcesAhead("divideThenForces");
+        ++counts_.divides;
+        const bool gated = refreshes();
+        if (gated) {  // the verdict stays on the device: it gates the evaluation's passes
+            exec_.reduceDeferred(refreshBegin(), nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid},
+                                 OrCombine{}, refresh_);
+            exec_.gate(refresh_.device());
+        } else {
+            sortAll(keep_step_start);
         }
+        evaluateForces(true);
+        exec_.gate(nullptr);
+        ahead_ = ForcesAhead{true, gated, keep_step_start};
+    }
+    bool forcesAhead() const override { return ahead_.on; }
+
+private:
+    /// Whether a divide may only refresh PosCell (a skin, and sorted once).
+    bool refreshes() const { return sorted_ && setup_.grid.skinf > 0.f; }
+    /// Only moving boundaries and solids move in the boundary block.
+    std::uint32_t refreshBegin() const { return setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_; }
+
+    /// The sort of a divide (see Backend::divide).
+    void sortAll(bool keep_step_start) {
         ++counts_.sorts;
         sorted_ = true;
         const bool pre = !setup_.symplectic || keep_step_start;
@@ -105,7 +133,41 @@ public:
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
     }
 
+    /// A force evaluation launched by divideThenForces, not yet taken by computeForces. `gated`:
+    /// the divide's verdict (sort or not) is still on the device, and a sort makes the
+    /// evaluation's passes do nothing.
+    struct ForcesAhead {
+        bool on = false, gated = false, keep = false;
+    };
+
+    /// Before reading the particles between two steps: a divide whose verdict is still out
+    /// is completed. With no sort the forces launched ahead stand; with a sort they did
+    /// nothing (gated), and computeForces evaluates them again.
+    void settleDivide() {
+        if (!ahead_.on || !ahead_.gated) return;
+        ahead_.gated = false;
+        if (refresh_.get() == 0u) return;
+        ahead_.on = false;
+        sortAll(ahead_.keep);
+    }
+    /// What changes the state cannot run between divideThenForces and computeForces (the
+    /// evaluation launched ahead would be stale, and the SPS stress, mDBC's boundary values and
+    /// the solids' hydrodynamic force it wrote could not be taken back).
+    void noForcesAhead(const char* what) const {
+        if (ahead_.on)
+            throw std::logic_error(std::string("Engine::") + what +
+                                   " called between divideThenForces and computeForces");
+    }
+    /// init, loadState: whatever was launched ahead is finished and forgotten.
+    void dropForcesAhead() {
+        if (ahead_.on) exec_.synchronize();
+        ahead_ = ForcesAhead{};
+    }
+
+public:
+
     void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) override {
+        noForcesAhead("applyMotion");
         if (setup_.nmoving == 0 || nbound_ == 0) return;
         assignFrom(motions_, motions);
         exec_.template forEach<LaunchDefault>(0u, nbound_,
@@ -114,6 +176,21 @@ public:
     }
 
     physics::DtMaxima computeForces() override {
+        if (ahead_.on) {
+            const physics::DtMaxima m = dt_ahead_.get();
+            const bool sort = ahead_.gated && refresh_.get() != 0u;
+            ahead_.on = false;
+            if (!sort) return m;
+            sortAll(ahead_.keep);
+        }
+        return evaluateForces(false);
+    }
+
+private:
+    /// The pressures, the pair loops and the dt maxima (with SPS, the stress for the next
+    /// evaluation, which DualSPHysics lags by one evaluation, in the dt reduction's launch);
+    /// `ahead`: the maxima go to dt_ahead_ without waiting (divideThenForces).
+    physics::DtMaxima evaluateForces(bool ahead) {
         ForceArgs a = forceArgs();
         if (solid_.n > 0) {  // the hydrodynamic force on the solids, in the boundary loop's launch
             a.hydro_slot = solid_.slot.data();
@@ -125,29 +202,35 @@ public:
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
         });
-        // With SPS, the stress for the next evaluation (DualSPHysics lags it by one evaluation)
-        // in the dt reduction's launch.
+        auto maxima = [&](const auto& pass) {
+            if (!ahead) return exec_.reduce(0u, a.np, physics::DtMaxima{}, pass, DtMaximaCombine{});
+            exec_.reduceDeferred(0u, a.np, physics::DtMaxima{}, pass, DtMaximaCombine{}, dt_ahead_);
+            return physics::DtMaxima{};
+        };
         if (setup_.physics.visco == physics::Viscosity::LaminarSps)
-            return exec_.reduce(0u, a.np, physics::DtMaxima{},
-                                DtMaximaPass<true>{a.nbound, a.v, c.dt_all_particles != 0, c.sps_smag, c.sps_blin},
-                                DtMaximaCombine{});
-        return exec_.reduce(0u, a.np, physics::DtMaxima{}, DtMaximaPass<false>{a.nbound, a.v, c.dt_all_particles != 0},
-                            DtMaximaCombine{});
+            return maxima(DtMaximaPass<true>{a.nbound, a.v, c.dt_all_particles != 0, c.sps_smag, c.sps_blin});
+        return maxima(DtMaximaPass<false>{a.nbound, a.v, c.dt_all_particles != 0});
     }
 
+public:
+
     void symplecticPredictor(double dt) override {
+        noForcesAhead("symplecticPredictor");
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PredictorPass{nbound_, p_.view(), dt, setup_.step});
     }
     void symplecticCorrector(double dt) override {
+        noForcesAhead("symplecticCorrector");
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, CorrectorPass{nbound_, p_.view(), dt, setup_.step});
     }
     void verletStep(double dt, bool euler) override {
+        noForcesAhead("verletStep");
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_,
                                               VerletPass{nbound_, p_.view(), dt, euler, setup_.step});
     }
 
     void solidSteps(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
                     bool ledger) override {
+        noForcesAhead("solidSteps");
         if (solid_.n == 0) return;
         if (n > 0) solidSubCycle(t0, dt, n, motions);
         solidToBoundary(dt * n, ledger);
@@ -169,14 +252,19 @@ public:
         if (solid_.n == 0) return 0.0;
         return exec_.reduce(0u, solid_.n, 0.0, SolidSpeedPass{solid_.vel.data()}, MaxCombine{});
     }
-    void solidSave() override { solid_.save(); }
+    void solidSave() override {
+        noForcesAhead("solidSave");
+        solid_.save();
+    }
     void solidRestore() override {
+        noForcesAhead("solidRestore");
         if (solid_.n == 0) return;
         solid_.restore();
         solidToBoundary(0.0, false);
     }
 
     void boundaryForces(std::vector<physics::Double3>& out) override {
+        settleDivide();
         out.assign(nbound_, physics::Double3{0, 0, 0});
         if (nbound_ == 0) return;
         // With mDBC the boundary particles take their ghost nodes' values for this, as in a force
@@ -208,6 +296,7 @@ public:
         if (gauge_nids_ > 0) assignFrom(gauge_slot_of_id_, gaugeSlotsOfIds(q.ids, nbound_));
     }
     void gauges(GaugeResults& out) override {
+        settleDivide();
         const std::uint32_t npts = std::uint32_t(gauge_points_.size()), nrows = std::uint32_t(gauge_rows_.size());
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             constexpr int kDim = decltype(dim)::value;
@@ -229,7 +318,10 @@ public:
     }
 
     DivideCounts divideCounts() const override { return counts_; }
-    std::uint32_t activeFluid() const override { return nfluid_; }
+    std::uint32_t activeFluid() override {
+        settleDivide();
+        return nfluid_;
+    }
     void synchronize() override { exec_.synchronize(); }
 
     void download(HostState& out) override {
@@ -239,6 +331,7 @@ public:
     void downloadFields(HostParticles& out) override { downloadIdOrder(out, ~0u, 0u); }
 
     void saveState(CheckpointData& out) override {
+        noForcesAhead("saveState");
         exec_.synchronize();
         auto put = [&](const std::string& name, auto& buf) {
             std::vector<std::remove_pointer_t<decltype(buf.data())>> host;
@@ -269,6 +362,7 @@ public:
     }
 
     void loadState(const CheckpointData& in) override {
+        dropForcesAhead();
         auto expect = [&](const char* name, long long want) {
             const long long got = in.integer(std::string("engine/") + name);
             if (got != want)
@@ -510,6 +604,9 @@ private:
 
     Exec exec_;
     typename Exec::template Deferred<std::uint32_t> solid_check_;  ///< startSolidsCheck's result
+    typename Exec::template Deferred<std::uint32_t> refresh_;      ///< divideThenForces' verdict: 1 = sort
+    typename Exec::template Deferred<physics::DtMaxima> dt_ahead_;  ///< divideThenForces' dt maxima
+    ForcesAhead ahead_;
     bool solid_check_started_ = false;
     BackendSetup setup_;
     std::uint32_t nbound_ = 0, nfluid_ = 0;

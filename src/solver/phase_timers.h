@@ -39,6 +39,8 @@ public:
         }
     }
 
+    bool enabled() const { return enabled_; }
+
     /// "phase times per step [ms]: divide ..." when timing is on and `steps` > 0.
     void report(std::ostream& log, long long steps) const;
 

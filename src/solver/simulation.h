@@ -125,6 +125,10 @@ private:
     LoopState resume(TimeStepper& stepper, StepContext& ctx);
     /// The next checkpoint time after `t` (-checkpoint; a huge number without one).
     double nextCheckpoint(double t) const;
+    /// StepWindow::ahead_before: the step end times below which the loop neither writes out,
+    /// measures nor saves the state, and the run does not end (the outputs', gauges',
+    /// checkpoints' and TimeMax's own tests, each just failed).
+    double aheadBefore(double next_out, double next_checkpoint) const;
     /// A file named TERMINATE in OUTDIR (DualSPHysics' way to end a run cleanly).
     bool terminateRequested() const;
 

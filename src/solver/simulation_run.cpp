@@ -15,6 +15,7 @@
 #include "solver/phase_timers.h"
 #include "solver/run_progress.h"
 #include "solver/simulation.h"
+#include "solver/simulation_parts.h"
 #include "solver/state_hash.h"
 #include "solver/step_context.h"
 #include "solver/stop_signal.h"
@@ -52,6 +53,21 @@ double nextOutputTime(double next, double t, double tout) {
 }
 
 }  // namespace
+
+double Simulation::aheadBefore(double next_out, double next_checkpoint) const {
+    const SolverParameters& p = case_.params;
+    // The loop's tests (run() below, GaugeSystem::evaluate) with t in place of the step end:
+    // t < tmax - 1e-12 tmax (the loop goes on), t < next_out - 1e-9 TimeOut (no output),
+    // t < next_checkpoint - 1e-9 interval (no checkpoint). A gauge is due from its next time
+    // less 1e-12 max(1, |t|): 1e-11 keeps clear of it.
+    double before = std::min({p.time_max - 1e-12 * p.time_max, next_out - 1e-9 * p.time_out,
+                              next_checkpoint - 1e-9 * opt_.checkpoint_interval});
+    if (gauges_ && std::isfinite(gauges_->nextTime())) {
+        const double g = gauges_->nextTime();
+        before = std::min(before, g - 1e-11 * std::max(1.0, std::fabs(g)));
+    }
+    return before;
+}
 
 RunSummary Simulation::run() {
     using Clock = std::chrono::steady_clock;
@@ -95,21 +111,28 @@ RunSummary Simulation::run() {
     // OUTDIR/TERMINATE is looked for after the first step, then at most every 0.2 s of wall
     // time: a file-system call after every step is a measurable share of a small case's step.
     Clock::time_point next_terminate_look = Clock::now();
+    // A stop request seen while the next force evaluation was already launched (the state at
+    // the step's end then holds that evaluation's writes, Backend::divideThenForces) is acted
+    // on one step later, at the end of a step that launched nothing ahead.
+    bool terminate_pending = false;
     sum_.stop_reason = "TimeMax reached";
     while (t < tmax - 1e-12 * tmax) {
         if (max_steps >= 0 && step >= max_steps) {
             sum_.stop_reason = "step limit (-nsteps) reached";
             break;
         }
-        if (const int sig = stopSignal()) {  // SIGINT/SIGTERM (stop_signal.h): end cleanly
+        const int sig = stopSignal();
+        if (sig != 0 && !backend_->forcesAhead()) {  // SIGINT/SIGTERM (stop_signal.h): end cleanly
             sum_.stop_reason = std::string("stopped by ") + stopSignalName(sig);
             sum_.exit_code = 128 + sig;
             saveCheckpoint(loopState(), *stepper, ctx);  // before the extra output: -restart continues the run
             if (lastOutputTime() < t) output(t, step);  // the state it stopped at
             break;
         }
-        const StepWindow window{std::min({next_out, tmax, gauges_ ? gauges_->nextTime() : tmax}),
-                                max_steps >= 0 ? max_steps - step : -1};
+        StepWindow window{std::min({next_out, tmax, gauges_ ? gauges_->nextTime() : tmax}),
+                          max_steps >= 0 ? max_steps - step : -1};
+        if (sig == 0 && !terminate_pending && (max_steps < 0 || step + 1 < max_steps) && !health_->check.scanDue(step + 1))
+            window.ahead_before = aheadBefore(next_out, next_checkpoint);
         StepResult done;
         try {
             done = stepper->advance(t, window);
@@ -135,9 +158,10 @@ RunSummary Simulation::run() {
             saveCheckpoint(loopState(), *stepper, ctx);
             next_checkpoint = nextCheckpoint(t);
         }
-        const bool look = Clock::now() >= next_terminate_look;
+        const bool look = !terminate_pending && Clock::now() >= next_terminate_look;
         if (look) next_terminate_look = Clock::now() + std::chrono::milliseconds(200);
-        if (look && terminateRequested()) {  // DualSPHysics' TERMINATE file: save, then stop cleanly
+        if (look && terminateRequested()) terminate_pending = true;
+        if (terminate_pending && !backend_->forcesAhead()) {  // DualSPHysics' TERMINATE file: save, then stop cleanly
             saveCheckpoint(loopState(), *stepper, ctx);
             if (lastOutputTime() < t) output(t, step);
             sum_.stop_reason = "TERMINATE file in OUTDIR";

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "core/error.h"
@@ -23,7 +24,10 @@ double initialDt(const SolverCase& c) {
 
 StepContext::StepContext(Backend& backend, const SolverCase& c, const BackendSetup& setup, int solid_substeps,
                          PhaseTimers& timers)
-    : backend_(backend), case_(c), setup_(setup), solid_substeps_(solid_substeps), timers_(timers) {}
+    : backend_(backend), case_(c), setup_(setup), solid_substeps_(solid_substeps), timers_(timers) {
+    const char* env = std::getenv("SEASPRING_FORCES_AHEAD");
+    ahead_allowed_ = !timers.enabled() && !(env != nullptr && std::string(env) == "0");
+}
 
 std::vector<physics::RigidMotionGpu> StepContext::motionsOver(double time, double interval) const {
     return motionPosesOver(case_.motion, time, interval);

@@ -35,6 +35,11 @@ public:
     const SolverParameters& params() const { return case_.params; }
     const BackendSetup& setup() const { return setup_; }
     PhaseTimers& timers() const { return timers_; }
+    /// Whether steps may launch the next force evaluation with their divide
+    /// (Backend::divideThenForces): not with the phase timers on (each phase is timed up to
+    /// a synchronisation), nor with SEASPRING_FORCES_AHEAD=0 in the environment (for
+    /// measurements; the bits are the same either way).
+    bool forcesAheadAllowed() const { return ahead_allowed_; }
     const StepCounters& counters() const { return counters_; }
     /// The counters into and out of a restart file ("counters/").
     void saveCounters(CheckpointData& d) const;
@@ -61,6 +66,7 @@ private:
     const BackendSetup& setup_;
     int solid_substeps_;
     PhaseTimers& timers_;
+    bool ahead_allowed_;
     StepCounters counters_;
 };
 

@@ -13,8 +13,9 @@ namespace {
 
 /// The end of a fluid step [time, time + dt] once the fluid is integrated: the solid's
 /// sub-cycle (with solids), the moving boundaries placed at time + dt with their velocity over
-/// `motion_interval` (the coming step's dt where known), and the division.
-StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_interval) {
+/// `motion_interval` (the coming step's dt where known), and the division; with the next force
+/// evaluation launched at once where the window allows (StepWindow::ahead_before).
+StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_interval, const StepWindow& window) {
     PhaseTimers& timers = ctx.timers();
     if (ctx.hasSolids()) {
         timers.time(PhaseTimers::Solid, [&] {
@@ -24,7 +25,10 @@ StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_
     }
     const double t = time + dt;
     timers.time(PhaseTimers::Motion, [&] { ctx.placeMoving(t, motion_interval); });
-    timers.time(PhaseTimers::Divide, [&] { ctx.backend().divide(false); });
+    timers.time(PhaseTimers::Divide, [&] {
+        if (ctx.forcesAheadAllowed() && t < window.ahead_before) ctx.backend().divideThenForces(false);
+        else ctx.backend().divide(false);
+    });
     return StepResult{t, dt, 1};
 }
 
@@ -33,7 +37,7 @@ StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_
 SymplecticStepper::SymplecticStepper(StepContext& ctx, bool midpoint)
     : ctx_(ctx), midpoint_(midpoint), dt_next_(initialDt(ctx.solverCase())) {}
 
-StepResult SymplecticStepper::advance(double time, const StepWindow&) {
+StepResult SymplecticStepper::advance(double time, const StepWindow& window) {
     Backend& b = ctx_.backend();
     PhaseTimers& timers = ctx_.timers();
     const double dt_fixed = ctx_.params().dt_fixed;
@@ -46,17 +50,20 @@ StepResult SymplecticStepper::advance(double time, const StepWindow&) {
         });
     }
     timers.time(PhaseTimers::Integrate, [&] { b.symplecticPredictor(dt); });
-    timers.time(PhaseTimers::Divide, [&] { b.divide(true); });
+    timers.time(PhaseTimers::Divide, [&] {  // the corrector's evaluation follows at once
+        if (ctx_.forcesAheadAllowed()) b.divideThenForces(true);
+        else b.divide(true);
+    });
     const double dt_corrector = ctx_.forcesDt();
     if (midpoint_) timers.time(PhaseTimers::Solid, [&] { b.solidRestore(); });
     timers.time(PhaseTimers::Integrate, [&] { b.symplecticCorrector(dt); });
     dt_next_ = std::min(dt_predictor, dt_corrector);
-    return endFluidStep(ctx_, time, dt, dt_fixed > 0 ? dt_fixed : dt_next_);
+    return endFluidStep(ctx_, time, dt, dt_fixed > 0 ? dt_fixed : dt_next_, window);
 }
 
 VerletStepper::VerletStepper(StepContext& ctx) : ctx_(ctx) {}
 
-StepResult VerletStepper::advance(double time, const StepWindow&) {
+StepResult VerletStepper::advance(double time, const StepWindow& window) {
     Backend& b = ctx_.backend();
     PhaseTimers& timers = ctx_.timers();
     const SolverParameters& p = ctx_.params();
@@ -65,7 +72,7 @@ StepResult VerletStepper::advance(double time, const StepWindow&) {
     const bool euler = ++steps_since_euler_ >= p.verlet_steps;
     if (euler) steps_since_euler_ = 0;
     timers.time(PhaseTimers::Integrate, [&] { b.verletStep(dt, euler); });
-    return endFluidStep(ctx_, time, dt, dt);
+    return endFluidStep(ctx_, time, dt, dt, window);
 }
 
 SolidOnlyStepper::SolidOnlyStepper(StepContext& ctx) : ctx_(ctx) {

@@ -6,6 +6,7 @@
 ///        outputs, gauges, progress and the stop rules belong to the loop (Simulation::run).
 #pragma once
 
+#include <cmath>
 #include <memory>
 
 #include "solver/step_context.h"
@@ -17,6 +18,11 @@ namespace seaspring::solver {
 struct StepWindow {
     double until = 0;           ///< the next output, gauge measurement or TimeMax
     long long steps_left = -1;  ///< steps left before -nsteps (-1: no limit)
+    /// A fluid step that ends before this time launches the next force evaluation with its
+    /// divide (Backend::divideThenForces): the loop sets it where nothing reads, writes out or
+    /// saves the state at the step's end (no output, gauge, checkpoint, health scan, step limit
+    /// or stop request due); -inf (the default): never.
+    double ahead_before = -HUGE_VAL;
 };
 
 /// What one step did.

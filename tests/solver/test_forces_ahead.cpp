@@ -1,0 +1,124 @@
+// SeaSpring — MIT licence.
+/// \file test_forces_ahead.cpp
+/// \brief The next force evaluation launched with the divide (Backend::divideThenForces, its
+///        passes gated on the divide's verdict) gives the bits of divide() then computeForces(),
+///        one test body per backend (the OpenMP backend on 2 threads and the CUDA backend, which
+///        skips visibly without a GPU): whole runs with SEASPRING_FORCES_AHEAD=0 and without it
+///        end with the same state hash and divide counts, on cases whose divides sorted and
+///        refreshed (both verdicts taken), with outputs between the steps, for Verlet with the
+///        SPS stress and a moving piston, symplectic with mDBC, and a VCPM gate with gauges.
+///        Broken on purpose, each failed here: computeForces() keeping the evaluation launched
+///        ahead when the verdict was a sort (the symplectic cases: their mid-step divide is
+///        settled there), settleDivide() taking every verdict for "no sort" (Verlet, the gate),
+///        and the gate left off the evaluation's passes (Verlet with SPS, the gate).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "solver_test_util.h"
+
+using namespace seaspring;
+using solver::Backend;
+
+namespace {
+
+struct Cpu2 {
+    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(2); }
+};
+struct Gpu {
+    static std::unique_ptr<Backend> make(std::string& why) { return solver::makeCudaBackend(0, why); }
+};
+
+template <class Kind>
+class ForcesAhead : public ::testing::Test {
+protected:
+    void SetUp() override {
+        std::string why;
+        if (!Kind::make(why)) GTEST_SKIP() << "no backend of this kind here: " << why;
+    }
+    void TearDown() override { unsetenv("SEASPRING_FORCES_AHEAD"); }
+};
+
+using Kinds = ::testing::Types<Cpu2, Gpu>;
+TYPED_TEST_SUITE(ForcesAhead, Kinds);
+
+/// One run of the case on a backend of this kind; `ahead`: launches allowed (the default) or
+/// SEASPRING_FORCES_AHEAD=0.
+template <class Kind>
+solver::RunSummary runOn(const std::string& kase_path, const std::string& outdir, bool ahead,
+                         const std::function<void(solver::RunOptions&)>& tweak) {
+    if (ahead) unsetenv("SEASPRING_FORCES_AHEAD");
+    else setenv("SEASPRING_FORCES_AHEAD", "0", 1);
+    solver::SolverCase kase = solver::loadSolverCase(kase_path);
+    solver::RunOptions o;
+    o.case_path = kase_path;
+    o.outdir = outdir;
+    o.quiet = true;
+    o.save_h5 = false;
+    tweak(o);
+    solver::applyOverrides(o, kase.params);
+    if (o.tmax) kase.params.time_max = *o.tmax;
+    if (o.tout) kase.params.time_out = *o.tout;
+    std::string why;
+    std::ostringstream log;
+    solver::Simulation sim(kase, o, Kind::make(why), log);
+    return sim.run();
+}
+
+/// Both ways on one case: same hash, same divides and sorts, and divides that both sorted and
+/// only refreshed.
+template <class Kind>
+void expectSameBits(const std::string& kase, const std::string& dir, const std::string& what,
+                    const std::function<void(solver::RunOptions&)>& tweak) {
+    const solver::RunSummary off = runOn<Kind>(kase, dir + "/off", false, tweak);
+    const solver::RunSummary on = runOn<Kind>(kase, dir + "/on", true, tweak);
+    EXPECT_EQ(on.state_hash, off.state_hash) << what;
+    EXPECT_EQ(on.steps, off.steps) << what;
+    EXPECT_EQ(on.divides, off.divides) << what;
+    EXPECT_EQ(on.sorts, off.sorts) << what;
+    EXPECT_GT(on.sorts, 1ull) << what << ": no divide sorted after the first, the gated path was not taken";
+    EXPECT_LT(on.sorts + 10, on.divides) << what << ": too few divides only refreshed";
+    EXPECT_GE(on.outputs, 3) << what << ": the run should write out between its steps";
+    std::printf("%s: %lld steps, %llu divides, %llu sorts, %d outputs, hash %s\n", what.c_str(), on.steps,
+                (unsigned long long)on.divides, (unsigned long long)on.sorts, on.outputs, on.state_hash.c_str());
+}
+
+std::string pistonCase(const std::string& dir, const char* file, const std::string& params) {
+    const std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/" + file);
+    return test::generateCase(dir, "piston", test::replaceOnce(xml, "<!--PARAMETERS-->", params));
+}
+
+}  // namespace
+
+TYPED_TEST(ForcesAhead, VerletSpsWithAMovingPiston) {
+    const std::string dir = test::scratch("ahead_verlet_sps");
+    const std::string kase = pistonCase(
+        dir, "PistonTank2D_Def.xml",
+        R"(<parameter key="StepAlgorithm" value="1" /><parameter key="VerletSteps" value="40" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)");
+    expectSameBits<TypeParam>(kase, dir, "Verlet, laminar+SPS, piston", [](solver::RunOptions& o) { o.nsteps = 600;
+        o.tout = 0.01;
+    });
+}
+
+TYPED_TEST(ForcesAhead, SymplecticMdbc) {
+    const std::string dir = test::scratch("ahead_sym_mdbc");
+    const std::string kase = pistonCase(
+        dir, "PistonTankMdbc2D_Def.xml",
+        R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value="2" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
+    expectSameBits<TypeParam>(kase, dir, "symplectic, mDBC slip 2, piston", [](solver::RunOptions& o) { o.nsteps = 500;
+        o.tout = 0.01;
+    });
+}
+
+TYPED_TEST(ForcesAhead, VcpmGateWithGauges) {
+    const std::string dir = test::scratch("ahead_antoci");
+    const std::string kase = test::generateCaseFile(dir, "ag", test::caseDef("antoci_gate2d/AntociGate2D_Def.xml"), 0.004);
+    expectSameBits<TypeParam>(kase, dir, "Antoci gate dp 4 mm, gauges", [](solver::RunOptions& o) {
+        o.tmax = 0.06;
+        o.tout = 0.01;
+    });
+}
