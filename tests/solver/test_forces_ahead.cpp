@@ -6,7 +6,9 @@
 ///        skips visibly without a GPU): whole runs with SEASPRING_FORCES_AHEAD=0 and without it
 ///        end with the same state hash and divide counts, on cases whose divides sorted and
 ///        refreshed (both verdicts taken), with outputs between the steps, for Verlet with the
-///        SPS stress and a moving piston, symplectic with mDBC, and a VCPM gate with gauges.
+///        SPS stress and a moving piston, symplectic with mDBC, and a VCPM gate with gauges on
+///        both schemes (Verlet: its dt, integration and solid sub-cycle found and run on the
+///        device, Backend::verletStepOnDevice).
 ///        Broken on purpose, each failed here: computeForces() keeping the evaluation launched
 ///        ahead when the verdict was a sort (the symplectic cases: their mid-step divide is
 ///        settled there), settleDivide() taking every verdict for "no sort" (Verlet, the gate),
@@ -110,6 +112,20 @@ TYPED_TEST(ForcesAhead, SymplecticMdbc) {
         dir, "PistonTankMdbc2D_Def.xml",
         R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value="2" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
     expectSameBits<TypeParam>(kase, dir, "symplectic, mDBC slip 2, piston", [](solver::RunOptions& o) { o.nsteps = 500;
+        o.tout = 0.01;
+    });
+}
+
+TYPED_TEST(ForcesAhead, VerletVcpmGateWithGauges) {
+    // The gate case on the Verlet scheme: the dt, the integration and the solids' sub-cycle on
+    // the device (Backend::verletStepOnDevice).
+    const std::string dir = test::scratch("ahead_antoci_verlet");
+    const std::string def = test::replaceOnce(test::readFile(test::caseDef("antoci_gate2d/AntociGate2D_Def.xml")),
+                                              R"(<parameter key="StepAlgorithm" value="2" />)",
+                                              R"(<parameter key="StepAlgorithm" value="1" />)");
+    const std::string kase = test::generateCase(dir, "ag", def, 0.004);
+    expectSameBits<TypeParam>(kase, dir, "Antoci gate dp 4 mm, Verlet, gauges", [](solver::RunOptions& o) {
+        o.tmax = 0.06;
         o.tout = 0.01;
     });
 }
