@@ -92,14 +92,6 @@ public:
         out.value = reduce(b, e, init, f, combine);
     }
 
-    /// out = f() (CudaExec::single: one device thread).
-    template <class T, class F>
-    void single(const F& f, Deferred<T>& out) const {
-        if (!gateClosed()) out.value = f();
-    }
-    /// The body of a sequence always runs here, where the "device" memory is.
-    bool sequenceInOneLaunch(std::uint64_t) const { return true; }
-
     /// Runs `body(run)` with a runner run(n, pass) = pass(i) for i < n, all threads of one
     /// parallel region sharing each pass (`omp for`, whose implied barrier orders the passes).
     template <class Body>

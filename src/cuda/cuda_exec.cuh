@@ -105,13 +105,6 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     }
 }
 
-/// *out = f() by one thread (CudaExec::single).
-template <class T, class F>
-__global__ void singleKernel(F f, T* out, const std::uint32_t* gate) {
-    if (gateClosed(gate)) return;
-    *out = f();
-}
-
 /// First index in [b, e) whose key is >= value (binary search, one thread).
 __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
                                  std::uint32_t* out);
@@ -243,20 +236,6 @@ public:
         SEASPRING_CUDA_CHECK(cudaMemcpyAsync(out.host_, result, sizeof(T), cudaMemcpyDeviceToHost));
         SEASPRING_CUDA_CHECK(cudaEventRecord(out.done_));
     }
-
-    /// out = f() computed by one device thread; the value then follows the kernel to the host
-    /// (out.get() waits) and stays on the device at out.device().
-    template <class T, class F>
-    void single(const F& f, Deferred<T>& out) const {
-        singleKernel<T, F><<<1, 1>>>(f, out.dev_.data(), gate_);
-        SEASPRING_CUDA_LAUNCH_CHECK();
-        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(out.host_, out.dev_.data(), sizeof(T), cudaMemcpyDeviceToHost));
-        SEASPRING_CUDA_CHECK(cudaEventRecord(out.done_));
-    }
-
-    /// Whether sequence(work, ...) runs in one launch (its body then runs on the device, where
-    /// it may read device memory to decide its loop counts).
-    bool sequenceInOneLaunch(std::uint64_t work) const { return work <= block_max_; }
 
     /// Runs `body(run)`: in ONE single-block kernel when work <= the block limit (`widest`:
     /// the largest pass, which sets the block's threads), else launching one grid per pass.

@@ -129,7 +129,7 @@ SEASPRING_HD inline void contactMotionAlarmAt(std::uint32_t s, const SolidState&
     const double half = 0.5 * (cp.list_range - cp.range);
     const double d2 = dx * dx + dy * dy + dz * dz;
     if (d2 > half * half && !solidOutside(st.keep, p))
-        raiseSolidAlarm(st.alarm, s, kSolidAlarmContactMotion, sqrt(d2), subCycleTime(st, 1.0));
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmContactMotion, sqrt(d2), st.t0 + st.span);
 }
 
 /// Host: the contact stiffness of a body, VcpmContactStiffness x k_1.

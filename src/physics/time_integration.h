@@ -145,21 +145,21 @@ SEASPRING_HD inline DtMaxima combineDtMaxima(const DtMaxima& a, const DtMaxima& 
     return {maxKeepNaN(a.ace2, b.ace2), maxKeepNaN(a.vel2, b.vel2), maxKeepNaN(a.visc, b.visc)};
 }
 
-/// dt = CFL min( sqrt(h/|a|max), h / (max(c0, 10 |v|max) + h viscmax) ) (double; sqrt is
-/// correctly rounded everywhere, the host and the device: physics/step_dt.h runs it on both). Returns +inf parts as needed when maxima are zero; a NaN
+/// Host only. dt = CFL min( sqrt(h/|a|max), h / (max(c0, 10 |v|max) + h viscmax) ) (host, double; sqrt
+/// is correctly rounded everywhere). Returns +inf parts as needed when maxima are zero; a NaN
 /// maximum gives a NaN dt (the step then stops as a blow-up).
-SEASPRING_HD inline double variableDt(const DtMaxima& m, double h, double cs0, double cfl) {
-    const double acemax = ::sqrt(double(m.ace2));
-    const double velmax = ::sqrt(double(m.vel2));
-    const double dt1 = acemax > 0 ? ::sqrt(h / acemax) : (acemax == 0 ? 1e300 : acemax);  // NaN stays NaN
+inline double variableDt(const DtMaxima& m, double h, double cs0, double cfl) {
+    const double acemax = std::sqrt(double(m.ace2));
+    const double velmax = std::sqrt(double(m.vel2));
+    const double dt1 = acemax > 0 ? std::sqrt(h / acemax) : (acemax == 0 ? 1e300 : acemax);  // NaN stays NaN
     const double cv = cs0 > 10.0 * velmax ? cs0 : 10.0 * velmax;
     const double dt2 = h / (cv + h * double(m.visc));
     return cfl * (dt1 < dt2 || dt1 != dt1 ? dt1 : dt2);  // a NaN in either stays NaN
 }
 
-/// The smallest dt a step may take (DualSPHysics' DtMin): `dt_min` when set (> 0), else
-/// CoefDtMin h / c0. A variable dt below it is raised to it (and counted: physics/step_dt.h).
-SEASPRING_HD inline double minimumDt(double dt_min, double coef_dt_min, double h, double cs0) {
+/// Host only. The smallest dt a step may take (DualSPHysics' DtMin): `dt_min` when set (> 0),
+/// else CoefDtMin h / c0. A variable dt below it is raised to it (and counted).
+inline double minimumDt(double dt_min, double coef_dt_min, double h, double cs0) {
     return dt_min > 0 ? dt_min : coef_dt_min * h / cs0;
 }
 

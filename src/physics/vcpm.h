@@ -235,7 +235,6 @@ struct SolidState {
     const Double3* load_force = nullptr;
     const Double3* load_rate = nullptr;
     double t0 = 0, span = 0;  ///< the sub-cycle's start time and length: t = t0 + f span
-    const double* span_at = nullptr;  ///< when set, the length is read there (a dt found on the device)
     SolidKeepBox keep;        ///< outside it a particle is frozen (SolidKeepBox)
     SolidAlarm* alarm = nullptr;  ///< the blow-up bound each particle passed first (blowup_bounds.h)
     /// Contact (solid_contact.h; all null without it): the contact force of the evaluation
@@ -246,15 +245,10 @@ struct SolidState {
     double* contact_work = nullptr;
 };
 
-/// The time at fraction f of the sub-cycle.
-SEASPRING_HD inline double subCycleTime(const SolidState& st, double f) {
-    return st.t0 + f * (st.span_at != nullptr ? *st.span_at : st.span);
-}
-
 /// The point load on solid particle s at time fraction f of the sub-cycle (0 without loads).
 SEASPRING_HD inline Double3 pointLoadAt(const SolidState& st, std::uint32_t s, double f) {
     if (!st.load_force) return Double3{0, 0, 0};
-    const double t = subCycleTime(st, f);
+    const double t = st.t0 + f * st.span;
     const Double3 a = st.load_force[s], r = st.load_rate[s];
     return Double3{a.x + r.x * t, a.y + r.y * t, a.z + r.z * t};
 }
@@ -269,7 +263,7 @@ SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const 
     const Double3 p = ep[s];
     const double crit = st.material[st.body[s]].crit_stretch;
     const bool out_s = solidOutside(st.keep, p);
-    const double t = subCycleTime(st, f);
+    const double t = st.t0 + f * st.span;
     if (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)) raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
     const int nb = b.count[s];
     double sum = 0.0;
@@ -401,7 +395,7 @@ SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st,
     const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};
     const double dth = 0.5 * dt;
     const Double3 p{p0.x + dth * (v0.x + v.x), p0.y + dth * (v0.y + v.y), p0.z + dth * (v0.z + v.z)};
-    const double t = subCycleTime(st, f);
+    const double t = st.t0 + f * st.span;
     if (notFinite(v.x) || notFinite(v.y) || notFinite(v.z))
         raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, v.x + v.y + v.z, t);
     else if (speedPastBound(v.x, v.y, v.z, st.material[st.body[s]].max_speed))
@@ -431,7 +425,7 @@ SEASPRING_HD inline std::uint32_t solidAlarmAfterSubCycleAt(std::uint32_t s, con
             double dx, dy, dz;
             const double len = bondVector(p, pj, dx, dy, dz);
             if (bondPastBound(len, b.rest[k])) {
-                raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, b.rest[k]), subCycleTime(st, 1.0));
+                raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, b.rest[k]), st.t0 + st.span);
                 break;
             }
         }
@@ -440,7 +434,7 @@ SEASPRING_HD inline std::uint32_t solidAlarmAfterSubCycleAt(std::uint32_t s, con
 }
 
 /// Number of solid sub-steps for a fluid step dt_f (Section 2.4.1): int(dt_f / dt_s) + 1.
-SEASPRING_HD inline int solidSubsteps(double dt_fluid, double dt_solid) {
+inline int solidSubsteps(double dt_fluid, double dt_solid) {
     const double r = dt_fluid / dt_solid;
     return r >= 1e9 ? 1000000000 : int(r) + 1;
 }

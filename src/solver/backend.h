@@ -17,7 +17,6 @@
 #include "physics/blowup_bounds.h"
 #include "physics/mdbc.h"
 #include "physics/particle_updates.h"
-#include "physics/step_dt.h"
 #include "physics/time_integration.h"
 #include "solver/particle_store.h"
 #include "solver/solid_setup.h"
@@ -144,18 +143,6 @@ public:
     virtual void symplecticPredictor(double dt) = 0;
     virtual void symplecticCorrector(double dt) = 0;
     virtual void verletStep(double dt, bool euler) = 0;
-    /// A Verlet step that does not wait for its dt: the force evaluation (the one launched
-    /// ahead, or one now), its dt found on the device (physics::verletStepDt with `rule`), the
-    /// integration and, with solids, their sub-cycle from t0 (ledger on), the copy into the
-    /// boundary block and the per-step check (startSolidsCheck); every pass after the dt is
-    /// gated on the dt being finite, so a diverged evaluation leaves the state as it was.
-    /// stepDt() waits for the dt. The bits are those of computeForces, verletStep and
-    /// solidSteps with the host's dt. Only where stepsOnDevice().
-    virtual void verletStepOnDevice(const physics::DtRule& rule, bool euler, double t0) = 0;
-    virtual physics::StepDt stepDt() = 0;
-    /// Whether verletStepOnDevice can run this case: no clamp node follows a motion (motions are
-    /// the host's), and the solids' sub-cycle runs in one launch (Exec::sequenceInOneLaunch).
-    virtual bool stepsOnDevice() const = 0;
     /// VCPM solids: `n` sub-steps of `dt` from time t0 with the hydrodynamic force held fixed; `motions`
     /// carries each motion object's pose at the start and the end of the n sub-steps (clamp
     /// nodes on moving boundaries move linearly in between). Then copies the solid positions

@@ -12,7 +12,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cstddef>
 #include <cstdint>
 #include <numeric>
 #include <stdexcept>
@@ -176,17 +175,6 @@ public:
                                                          moving_pos0_.data(), moving_object_.data(), motions_.data()});
     }
 
-    /// computeForces without waiting: the evaluation launched ahead (settling its divide), or
-    /// one launched now; its maxima are at dt_ahead_.device().
-    void forcesWithoutWait() {
-        if (ahead_.on) {
-            const bool sort = ahead_.gated && refresh_.get() != 0u;
-            ahead_.on = false;
-            if (!sort) return;
-            sortAll(ahead_.keep);
-        }
-        evaluateForces(true);
-    }
     physics::DtMaxima computeForces() override {
         if (ahead_.on) {
             const physics::DtMaxima m = dt_ahead_.get();
@@ -234,43 +222,6 @@ public:
         noForcesAhead("symplecticCorrector");
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, CorrectorPass{nbound_, p_.view(), dt, setup_.step});
     }
-    bool stepsOnDevice() const override {
-        return solid_.n == 0 ||
-               (!solid_.clamps_move && exec_.sequenceInOneLaunch(std::uint64_t(solid_.n) + solid_.nclamp));
-    }
-    void verletStepOnDevice(const physics::DtRule& rule, bool euler, double t0) override {
-        if (!stepsOnDevice()) throw std::logic_error("Engine::verletStepOnDevice: not for this case (stepsOnDevice)");
-        forcesWithoutWait();
-        exec_.single(StepDtPass{dt_ahead_.device(), rule}, step_dt_);
-        const physics::StepDt* step = step_dt_.device();
-        auto at = [step](std::size_t offset) { return reinterpret_cast<const char*>(step) + offset; };
-        exec_.gate(reinterpret_cast<const std::uint32_t*>(at(offsetof(physics::StepDt, bad))));
-        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_,
-                                              VerletPass{nbound_, p_.view(), 0.0, euler, setup_.step,
-                                                         reinterpret_cast<const double*>(at(offsetof(physics::StepDt, dt)))});
-        if (solid_.n > 0) {
-            kept_t0_span_[0] = solid_.t0;  // back in stepDt() when the dt is not finite
-            kept_t0_span_[1] = solid_.span;
-            span_on_device_ = reinterpret_cast<const double*>(at(offsetof(physics::StepDt, span)));
-            solidSubCycle(t0, 0.0, 0, {}, step);
-            solidToBoundary(0.0, true, span_on_device_);
-        }
-        exec_.gate(nullptr);
-        if (solid_.n > 0) startSolidsCheck();
-    }
-    physics::StepDt stepDt() override {
-        const physics::StepDt s = step_dt_.get();
-        if (span_on_device_ != nullptr) {
-            if (s.bad == 0u) {
-                solid_.span = s.span;  // as solidSubCycle sets it
-            } else {  // nothing ran
-                solid_.t0 = kept_t0_span_[0];
-                solid_.span = kept_t0_span_[1];
-            }
-        }
-        span_on_device_ = nullptr;
-        return s;
-    }
     void verletStep(double dt, bool euler) override {
         noForcesAhead("verletStep");
         exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_,
@@ -292,9 +243,8 @@ public:
     }
     void startSolidsCheck() override {
         if (solid_.n == 0) return;
-        physics::SolidState st = solid_.state();
-        st.span_at = span_on_device_;  // the last sub-cycle's length, when the device found it
-        exec_.reduceDeferred(0u, solid_.n, 0u, SolidAlarmPass{st, solid_.bonds(), solid_.clamps(), subCycleContact()},
+        exec_.reduceDeferred(0u, solid_.n, 0u,
+                             SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(), subCycleContact()},
                              CountCombine{}, solid_check_);
         solid_check_started_ = true;
     }
@@ -606,9 +556,7 @@ private:
     }
 
     /// n solid sub-steps of dt from t0 (clamp nodes moved by `motions` over the whole interval).
-    /// `step`: n, dt and the span are read on the device there (verletStepOnDevice).
-    void solidSubCycle(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions,
-                       const physics::StepDt* step = nullptr) {
+    void solidSubCycle(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
         solid_.t0 = t0;
         solid_.span = dt * double(n);
         ClampMotion cm;
@@ -622,7 +570,7 @@ private:
         }
         const SubCycleContact ct = subCycleContact();
         const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
-                                 setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, step};
+                                 setup_.step.gx, setup_.step.gy, setup_.step.gz, ct};
         exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, solid_.n + solid_.nclamp, body);  // widest: the sums
     }
 
@@ -647,21 +595,17 @@ private:
 
     /// Solid positions and velocities into the boundary block after a sub-cycle of length dt;
     /// `ledger`: accumulate the impulse and work of the hydrodynamic force.
-    void solidToBoundary(double dt, bool ledger, const double* dt_at = nullptr) {
+    void solidToBoundary(double dt, bool ledger) {
         exec_.template forEach<LaunchDefault>(
             0u, solid_.n,
             SolidToBoundaryPass{solid_.slot.data(), solid_.pos.data(), solid_.vel.data(), solid_.fluid_force.data(), dt,
-                                solid_.impulse.data(), solid_.work.data(), ledger, p_.pos.data(), p_.velrho.data(),
-                                dt_at});
+                                solid_.impulse.data(), solid_.work.data(), ledger, p_.pos.data(), p_.velrho.data()});
     }
 
     Exec exec_;
     typename Exec::template Deferred<std::uint32_t> solid_check_;  ///< startSolidsCheck's result
     typename Exec::template Deferred<std::uint32_t> refresh_;      ///< divideThenForces' verdict: 1 = sort
     typename Exec::template Deferred<physics::DtMaxima> dt_ahead_;  ///< divideThenForces' dt maxima
-    typename Exec::template Deferred<physics::StepDt> step_dt_;     ///< verletStepOnDevice's dt
-    const double* span_on_device_ = nullptr;  ///< the sub-cycle's span on the device until stepDt()
-    double kept_t0_span_[2] = {0, 0};
     ForcesAhead ahead_;
     bool solid_check_started_ = false;
     BackendSetup setup_;

@@ -12,7 +12,6 @@
 #include "physics/fluid_pair_terms.h"
 #include "physics/gauges.h"
 #include "physics/particle_updates.h"
-#include "physics/step_dt.h"
 #include "physics/time_integration.h"
 
 namespace seaspring::solver {
@@ -142,17 +141,7 @@ struct VerletPass {
     double dt;
     bool euler;
     physics::StepConstants s;
-    const double* dt_at = nullptr;  ///< when set, dt is read there (physics::StepDt::dt)
-    SEASPRING_HD void operator()(std::uint32_t i) const {
-        physics::verletAt(i, nbound, v, dt_at != nullptr ? *dt_at : dt, euler, s);
-    }
-};
-
-/// A Verlet step's dt from an evaluation's maxima on the device (Exec::single).
-struct StepDtPass {
-    const physics::DtMaxima* maxima;
-    physics::DtRule rule;
-    SEASPRING_HD physics::StepDt operator()() const { return physics::verletStepDt(*maxima, rule); }
+    SEASPRING_HD void operator()(std::uint32_t i) const { physics::verletAt(i, nbound, v, dt, euler, s); }
 };
 
 // ---- around the pair loops: pressure, SPS stress, dt maxima ------------------------------

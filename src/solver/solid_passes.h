@@ -64,10 +64,8 @@ struct SolidToBoundaryPass {
     bool ledger;
     physics::Double3* bpos;
     physics::Float4* bvelrho;
-    const double* dt_at = nullptr;  ///< when set, dt is read there (physics::StepDt::span)
     SEASPRING_HD void operator()(std::uint32_t s) const {
-        physics::solidToBoundaryAt(s, slot, pos, vel, fluid_force, dt_at != nullptr ? *dt_at : dt, impulse, work,
-                                   ledger, bpos, bvelrho);
+        physics::solidToBoundaryAt(s, slot, pos, vel, fluid_force, dt, impulse, work, ledger, bpos, bvelrho);
     }
 };
 
@@ -160,19 +158,12 @@ struct SolidSubCycle {
     int n;
     double dt, gx, gy, gz;
     SubCycleContact ct;
-    /// When set, n, dt and the span are read there (a dt found on the device; the runner must
-    /// then run on the device: Exec::sequenceInOneLaunch).
-    const physics::StepDt* step = nullptr;
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
 #endif
     template <class Run>
     SEASPRING_HD void operator()(Run& run) const {
-        const int n = step != nullptr ? step->omega : this->n;
-        const double dt = step != nullptr ? step->dt_solid : this->dt;
-        physics::SolidState st = this->st;
-        if (step != nullptr) st.span_at = &step->span;
         run(cn.n + (ct.on ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct});
         const double inv_n = 1.0 / double(n);
         const std::uint32_t nsums = b.n + cn.n;

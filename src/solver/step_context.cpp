@@ -27,14 +27,6 @@ StepContext::StepContext(Backend& backend, const SolverCase& c, const BackendSet
     : backend_(backend), case_(c), setup_(setup), solid_substeps_(solid_substeps), timers_(timers) {
     const char* env = std::getenv("SEASPRING_FORCES_AHEAD");
     ahead_allowed_ = !timers.enabled() && !(env != nullptr && std::string(env) == "0");
-    const double h = c.constants.h, cs0 = c.constants.speedsound;
-    rule_.h = h;
-    rule_.cs0 = cs0;
-    rule_.cfl = c.params.cfl_number;
-    rule_.dt_min = physics::minimumDt(c.params.dt_min, c.params.coef_dt_min, h, cs0);
-    rule_.dt_fixed = c.params.dt_fixed;
-    rule_.solid_dt = setup.solid.empty() ? 0.0 : setup.solid.dt;
-    rule_.solid_substeps = solid_substeps;
 }
 
 std::vector<physics::RigidMotionGpu> StepContext::motionsOver(double time, double interval) const {
@@ -48,26 +40,23 @@ void StepContext::placeMoving(double time, double interval) {
 
 double StepContext::forcesDt() {
     const physics::DtMaxima m = timers_.time(PhaseTimers::Forces, [&] { return backend_.computeForces(); });
-    return acceptDt(physics::limitedVariableDt(m, rule_));
+    return limitDt(physics::variableDt(m, case_.constants.h, case_.constants.speedsound, case_.params.cfl_number));
 }
 
-double StepContext::acceptDt(const physics::LimitedDt& l) {
-    if (l.bad != 0u) {
+double StepContext::limitDt(double dt) {
+    const double dtmin = physics::minimumDt(case_.params.dt_min, case_.params.coef_dt_min, case_.constants.h,
+                                            case_.constants.speedsound);
+    if (!std::isfinite(dt)) {
         char v[64];
-        std::snprintf(v, sizeof v, "%g", l.dt);
-        throw NonFiniteStep("the time step is not finite (dt = " + std::string(v) + "): the forces diverged");
+        std::snprintf(v, sizeof v, "%g", dt);
+        throw NonFiniteStep("the time step is not finite (dt = " + std::string(v) +
+                            "): the forces diverged");
     }
-    if (l.raised != 0u) ++counters_.dtmin_hits;
-    return l.dt;
-}
-
-double StepContext::acceptStepDt(const physics::StepDt& s) {
-    acceptDt(physics::LimitedDt{s.variable, s.raised, s.bad});
-    if (s.omega > 0) {
-        counters_.solid_substeps += s.omega;
-        counters_.omega_max = std::max(counters_.omega_max, int(s.omega));
+    if (dt < dtmin) {
+        ++counters_.dtmin_hits;
+        return dtmin;
     }
-    return s.dt;
+    return dt;
 }
 
 void StepContext::advanceSolid(double time, double dt_fluid, bool ledger) {

@@ -52,16 +52,10 @@ public:
     /// (no-op without moving boundaries).
     void placeMoving(double time, double interval);
     /// One force evaluation (timed as "forces") and the dt it allows: the CFL condition
-    /// (physics::variableDt) raised to DtMin (physics::limitedVariableDt), through acceptDt.
+    /// (physics::variableDt) through limitDt.
     double forcesDt();
-    /// What a step's dt is made of (physics/step_dt.h), for the device's own dt.
-    const physics::DtRule& dtRule() const { return rule_; }
-    /// A variable dt as found: counts a raise to DtMin (dtmin_hits) and returns it; throws
-    /// NonFiniteStep when it is not finite (the forces diverged).
-    double acceptDt(const physics::LimitedDt& l);
-    /// A Verlet step's dt found on the device (Backend::verletStepOnDevice): acceptDt, then
-    /// counts its solid sub-steps as advanceSolid does.
-    double acceptStepDt(const physics::StepDt& s);
+    /// `dt` raised to DtMin (counted in dtmin_hits); throws seaspring::Error when it is not finite.
+    double limitDt(double dt);
     /// The solid sub-cycle of one fluid step [time, time + dt_fluid] (no-op without solids):
     /// -vcpmsubsteps or physics::solidSubsteps sub-steps; `ledger`: see Backend::solidSteps.
     void advanceSolid(double time, double dt_fluid, bool ledger = true);
@@ -73,7 +67,6 @@ private:
     int solid_substeps_;
     PhaseTimers& timers_;
     bool ahead_allowed_;
-    physics::DtRule rule_;
     StepCounters counters_;
 };
 

@@ -15,11 +15,9 @@ namespace {
 /// sub-cycle (with solids), the moving boundaries placed at time + dt with their velocity over
 /// `motion_interval` (the coming step's dt where known), and the division; with the next force
 /// evaluation launched at once where the window allows (StepWindow::ahead_before).
-/// `solids_done`: the step's sub-cycle and check were launched already (verletStepOnDevice).
-StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_interval, const StepWindow& window,
-                        bool solids_done = false) {
+StepResult endFluidStep(StepContext& ctx, double time, double dt, double motion_interval, const StepWindow& window) {
     PhaseTimers& timers = ctx.timers();
-    if (ctx.hasSolids() && !solids_done) {
+    if (ctx.hasSolids()) {
         timers.time(PhaseTimers::Solid, [&] {
             ctx.advanceSolid(time, dt);
             ctx.backend().startSolidsCheck();  // its result comes back with the division's
@@ -69,15 +67,6 @@ StepResult VerletStepper::advance(double time, const StepWindow& window) {
     Backend& b = ctx_.backend();
     PhaseTimers& timers = ctx_.timers();
     const SolverParameters& p = ctx_.params();
-    if (ctx_.forcesAheadAllowed() && b.stepsOnDevice()) {
-        // The dt stays on the device: the integration and the solids follow the evaluation
-        // without a round trip, and the host waits for the dt while they run.
-        const bool euler = steps_since_euler_ + 1 >= p.verlet_steps;
-        b.verletStepOnDevice(ctx_.dtRule(), euler, time);
-        const double dt = ctx_.acceptStepDt(b.stepDt());  // throws before any state changed
-        steps_since_euler_ = euler ? 0 : steps_since_euler_ + 1;
-        return endFluidStep(ctx_, time, dt, dt, window, true);
-    }
     const double dt_forces = ctx_.forcesDt();
     const double dt = p.dt_fixed > 0 ? p.dt_fixed : dt_forces;
     const bool euler = ++steps_since_euler_ >= p.verlet_steps;

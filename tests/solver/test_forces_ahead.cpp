@@ -7,8 +7,7 @@
 ///        end with the same state hash and divide counts, on cases whose divides sorted and
 ///        refreshed (both verdicts taken), with outputs between the steps, for Verlet with the
 ///        SPS stress and a moving piston, symplectic with mDBC, and a VCPM gate with gauges on
-///        both schemes (Verlet: its dt, integration and solid sub-cycle found and run on the
-///        device, Backend::verletStepOnDevice).
+///        both schemes.
 ///        Broken on purpose, each failed here: computeForces() keeping the evaluation launched
 ///        ahead when the verdict was a sort (the symplectic cases: their mid-step divide is
 ///        settled there), settleDivide() taking every verdict for "no sort" (Verlet, the gate),
@@ -117,8 +116,7 @@ TYPED_TEST(ForcesAhead, SymplecticMdbc) {
 }
 
 TYPED_TEST(ForcesAhead, VerletVcpmGateWithGauges) {
-    // The gate case on the Verlet scheme: the dt, the integration and the solids' sub-cycle on
-    // the device (Backend::verletStepOnDevice).
+    // The gate case on the Verlet scheme (one divide a step, settled by activeFluid).
     const std::string dir = test::scratch("ahead_antoci_verlet");
     const std::string def = test::replaceOnce(test::readFile(test::caseDef("antoci_gate2d/AntociGate2D_Def.xml")),
                                               R"(<parameter key="StepAlgorithm" value="2" />)",
