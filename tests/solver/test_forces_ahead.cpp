@@ -11,15 +11,19 @@
 ///        Broken on purpose, each failed here: computeForces() keeping the evaluation launched
 ///        ahead when the verdict was a sort (the symplectic cases: their mid-step divide is
 ///        settled there), settleDivide() taking every verdict for "no sort" (Verlet, the gate),
-///        and the gate left off the evaluation's passes (Verlet with SPS, the gate).
+///        the gate left off the evaluation's passes (Verlet with SPS, the gate), and
+///        settleDivide() dropping a valid evaluation, evaluated again (the SPS cases and the
+///        contract test below: the SPS stress then lags twice).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <functional>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include "solver/state_hash.h"
 #include "solver_test_util.h"
 
 using namespace seaspring;
@@ -135,4 +139,44 @@ TYPED_TEST(ForcesAhead, VcpmGateWithGauges) {
         o.tmax = 0.06;
         o.tout = 0.01;
     });
+}
+
+// The contract of divideThenForces: until computeForces takes the evaluation launched ahead,
+// what would change the state (or save it) throws, and computeForces gives the maxima of
+// divide() then computeForces() on a twin backend.
+TYPED_TEST(ForcesAhead, NothingChangesTheStateUntilComputeForces) {
+    const std::string dir = test::scratch("ahead_contract");
+    const std::string kase = pistonCase(
+        dir, "PistonTank2D_Def.xml",
+        R"(<parameter key="StepAlgorithm" value="1" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)");
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    const solver::BackendSetup setup = solver::makeBackendSetup(c, 0, 0.05);
+    std::string why;
+    std::unique_ptr<Backend> a = TypeParam::make(why), b = TypeParam::make(why);
+    for (Backend* x : {a.get(), b.get()}) {
+        x->init(setup);
+        x->divide(false);
+        x->computeForces();
+        x->verletStep(1e-4, false);
+    }
+    a->divide(false);
+    b->divideThenForces(false);
+    EXPECT_TRUE(b->forcesAhead());
+    EXPECT_THROW(b->verletStep(1e-4, false), std::logic_error);
+    EXPECT_THROW(b->divide(false), std::logic_error);
+    CheckpointData d;
+    EXPECT_THROW(b->saveState(d), std::logic_error);
+    EXPECT_EQ(b->activeFluid(), a->activeFluid());  // settles the verdict; the evaluation stands
+    EXPECT_TRUE(b->forcesAhead());
+    const physics::DtMaxima ma = a->computeForces(), mb = b->computeForces();
+    EXPECT_FALSE(b->forcesAhead());
+    EXPECT_EQ(ma.ace2, mb.ace2);
+    EXPECT_EQ(ma.vel2, mb.vel2);
+    EXPECT_EQ(ma.visc, mb.visc);
+    EXPECT_NO_THROW(b->verletStep(1e-4, false));
+    a->verletStep(1e-4, false);
+    solver::HostState sa, sb;
+    a->download(sa);
+    b->download(sb);
+    EXPECT_EQ(solver::hashHex(solver::stateHash(sa)), solver::hashHex(solver::stateHash(sb)));
 }
