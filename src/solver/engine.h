@@ -25,6 +25,7 @@
 #include "solver/force_passes.h"
 #include "solver/launch.h"
 #include "solver/particle_passes.h"
+#include "solver/particle_sort.h"
 #include "solver/particle_store.h"
 #include "solver/solid_arrays.h"
 #include "solver/solid_passes.h"
@@ -473,79 +474,12 @@ private:
         });
     }
 
-    /// The divide's sort memory, in the force-evaluation fields (physics::kForceEval), which
-    /// nothing reads between a divide and the next force evaluation: keys (8 bytes a
-    /// particle) in press_ovrho, the permutation (4) in visc, the radix sort's second key and
-    /// permutation buffers (8 + 4) and then the gather scratch (16) in acear.
-    struct SortMemory {
-        std::uint64_t* keys;
-        std::uint32_t* perm;
-        std::uint64_t* keys_alt;
-        std::uint32_t* perm_alt;
-        void* scratch;  ///< 16 bytes a particle
-    };
-    SortMemory sortMemory() {
-        static_assert(sizeof(physics::Float2) == sizeof(std::uint64_t) && sizeof(float) == sizeof(std::uint32_t) &&
-                          sizeof(physics::Float4) == 2 * sizeof(std::uint64_t),
-                      "the sort memory layout assumes these sizes");
-        auto* alt = reinterpret_cast<std::uint64_t*>(p_.acear.data());
-        return SortMemory{reinterpret_cast<std::uint64_t*>(p_.press_ovrho.data()),
-                          reinterpret_cast<std::uint32_t*>(p_.visc.data()), alt,
-                          reinterpret_cast<std::uint32_t*>(alt + p_.acear.size()), alt};
-    }
-
-    /// Reorders [b, e) of a sorted field by the permutation of the last sort, through the
-    /// 16-byte scratch (wider fields one word at a time).
-    template <typename T>
-    void gather(Buf<T>& arr, std::uint32_t b, std::uint32_t e, const SortMemory& m) {
-        if (arr.empty() || e <= b) return;
-        if constexpr (sizeof(T) <= sizeof(physics::Float4)) {
-            T* tmp = reinterpret_cast<T*>(m.scratch);
-            exec_.template forEach<LaunchDefault>(b, e, GatherPass<T>{m.perm, arr.data(), tmp});
-            exec_.copy(arr.data() + b, tmp + b, e - b);
-        } else {
-            using W = std::conditional_t<sizeof(T) % sizeof(std::uint64_t) == 0 && alignof(T) >= alignof(std::uint64_t),
-                                         std::uint64_t, std::uint32_t>;
-            static_assert(sizeof(T) % sizeof(W) == 0, "a field is a whole number of words");
-            constexpr std::uint32_t kWords = sizeof(T) / sizeof(W);
-            W* words = reinterpret_cast<W*>(arr.data());
-            W* tmp = reinterpret_cast<W*>(m.scratch);
-            for (std::uint32_t k = 0; k < kWords; ++k) {
-                exec_.template forEach<LaunchDefault>(b, e, GatherWordPass<W>{m.perm, words, kWords, k, tmp});
-                exec_.template forEach<LaunchDefault>(b, e, PutWordPass<W>{tmp, kWords, k, words});
-            }
-        }
-    }
-
-    /// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort
-    /// (kSorted; kSortedPre when `pre`); rebuilds `cs` for the active part. Returns its end.
+    /// See solver/particle_sort.h.
     std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, Buf<std::uint32_t>& cs, bool pre) {
-        const SortMemory m = sortMemory();
-        if (e > b) {
-            exec_.template forEach<LaunchDefault>(b, e, SortKeyPass{p_.view(), setup_.grid, m.keys, m.perm});
-            exec_.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
-            p_.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
-                if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gather(buf, b, e, m);
-            });
-        }
-        const std::uint32_t active_end = e > b ? exec_.lowerBound(m.keys, b, e, physics::kExcludedCell << 32) : b;
-        exec_.template forEach<LaunchDefault>(0u, std::uint32_t(cs.size()),
-                                              CellStartOuterPass{b, active_end, m.keys, cs.data()});
-        exec_.template forEach<LaunchDefault>(b, active_end, CellStartFillPass{b, m.keys, cs.data()});
-        return active_end;
+        return sortBlockRange(exec_, p_, setup_.grid, b, e, cs, pre);
     }
-
-    /// Bit `bit` of the per-cell near flags from the cell ranges `cs` of its block
-    /// (physics::cellOccupiedAt, then dilateCellsAt along x, y, z; the other bit is kept).
     void nearFlags(const Buf<std::uint32_t>& cs, std::uint8_t bit) {
-        const std::uint32_t nc = setup_.grid.cellCount();
-        const physics::CellGrid& g = setup_.grid;
-        std::uint8_t *a = near_.data(), *t = near_tmp_.data();
-        exec_.template forEach<LaunchDefault>(0u, nc, CellOccupiedPass{cs.data(), bit, a});
-        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{0, g, bit, a, t});
-        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{1, g, bit, t, a});
-        exec_.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{2, g, bit, a, t});
-        exec_.copy(a, t, nc);
+        nearFlagsOfBlock(exec_, setup_.grid, cs, bit, near_, near_tmp_);
     }
 
     /// slot[s] = sorted index of solid particle s.

@@ -1,0 +1,99 @@
+// SeaSpring — MIT licence.
+/// \file particle_sort.h
+/// \brief The divide's sort of one block of particles (solver/engine.h): keys by (cell, id),
+///        the execution policy's radix sort, the gather of every field that follows the sort,
+///        the block's cell ranges, and its bit of the per-cell near flags. Written once over an
+///        execution policy `Exec` and the particle store, as the rest of the engine.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "physics/cell_grid.h"
+#include "physics/particle_fields.h"
+#include "solver/launch.h"
+#include "solver/particle_passes.h"
+
+namespace seaspring::solver {
+
+/// The divide's sort memory, in the force-evaluation fields (physics::kForceEval), which
+/// nothing reads between a divide and the next force evaluation: keys (8 bytes a particle) in
+/// press_ovrho, the permutation (4) in visc, the radix sort's second key and permutation
+/// buffers (8 + 4) and then the gather scratch (16) in acear.
+struct SortMemory {
+    std::uint64_t* keys;
+    std::uint32_t* perm;
+    std::uint64_t* keys_alt;
+    std::uint32_t* perm_alt;
+    void* scratch;  ///< 16 bytes a particle
+};
+
+template <class Store>
+SortMemory sortMemoryOf(Store& p) {
+    static_assert(sizeof(physics::Float2) == sizeof(std::uint64_t) && sizeof(float) == sizeof(std::uint32_t) &&
+                      sizeof(physics::Float4) == 2 * sizeof(std::uint64_t),
+                  "the sort memory layout assumes these sizes");
+    auto* alt = reinterpret_cast<std::uint64_t*>(p.acear.data());
+    return SortMemory{reinterpret_cast<std::uint64_t*>(p.press_ovrho.data()), reinterpret_cast<std::uint32_t*>(p.visc.data()),
+                      alt, reinterpret_cast<std::uint32_t*>(alt + p.acear.size()), alt};
+}
+
+/// Reorders [b, e) of a sorted field by the permutation of the last sort, through the 16-byte
+/// scratch (wider fields one word at a time).
+template <class Exec, class BufT>
+void gatherSorted(Exec& exec, BufT& arr, std::uint32_t b, std::uint32_t e, const SortMemory& m) {
+    using T = std::remove_pointer_t<decltype(arr.data())>;
+    if (arr.empty() || e <= b) return;
+    if constexpr (sizeof(T) <= sizeof(physics::Float4)) {
+        T* tmp = reinterpret_cast<T*>(m.scratch);
+        exec.template forEach<LaunchDefault>(b, e, GatherPass<T>{m.perm, arr.data(), tmp});
+        exec.copy(arr.data() + b, tmp + b, e - b);
+    } else {
+        using W = std::conditional_t<sizeof(T) % sizeof(std::uint64_t) == 0 && alignof(T) >= alignof(std::uint64_t),
+                                     std::uint64_t, std::uint32_t>;
+        static_assert(sizeof(T) % sizeof(W) == 0, "a field is a whole number of words");
+        constexpr std::uint32_t kWords = sizeof(T) / sizeof(W);
+        W* words = reinterpret_cast<W*>(arr.data());
+        W* tmp = reinterpret_cast<W*>(m.scratch);
+        for (std::uint32_t k = 0; k < kWords; ++k) {
+            exec.template forEach<LaunchDefault>(b, e, GatherWordPass<W>{m.perm, words, kWords, k, tmp});
+            exec.template forEach<LaunchDefault>(b, e, PutWordPass<W>{tmp, kWords, k, words});
+        }
+    }
+}
+
+/// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort (kSorted;
+/// kSortedPre when `pre`); rebuilds the cell ranges `cs` for the active part. Returns its end.
+template <class Exec, class Store, class CellStarts>
+std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, std::uint32_t b, std::uint32_t e,
+                             CellStarts& cs, bool pre) {
+    const SortMemory m = sortMemoryOf(p);
+    if (e > b) {
+        exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm});
+        exec.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
+        p.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
+            if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gatherSorted(exec, buf, b, e, m);
+        });
+    }
+    const std::uint32_t active_end = e > b ? exec.lowerBound(m.keys, b, e, physics::kExcludedCell << 32) : b;
+    exec.template forEach<LaunchDefault>(0u, std::uint32_t(cs.size()), CellStartOuterPass{b, active_end, m.keys, cs.data()});
+    exec.template forEach<LaunchDefault>(b, active_end, CellStartFillPass{b, m.keys, cs.data()});
+    return active_end;
+}
+
+/// Bit `bit` of the per-cell near flags `near` from the cell ranges `cs` of its block
+/// (physics::cellOccupiedAt, then dilateCellsAt along x, y, z through `tmp`; the other bit is
+/// kept).
+template <class Exec, class CellStarts, class Flags>
+void nearFlagsOfBlock(Exec& exec, const physics::CellGrid& g, const CellStarts& cs, std::uint8_t bit, Flags& near,
+                      Flags& tmp) {
+    const std::uint32_t nc = g.cellCount();
+    std::uint8_t *a = near.data(), *t = tmp.data();
+    exec.template forEach<LaunchDefault>(0u, nc, CellOccupiedPass{cs.data(), bit, a});
+    exec.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{0, g, bit, a, t});
+    exec.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{1, g, bit, t, a});
+    exec.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{2, g, bit, a, t});
+    exec.copy(a, t, nc);
+}
+
+}  // namespace seaspring::solver
