@@ -334,21 +334,12 @@ public:
     void saveState(CheckpointData& out) override {
         noForcesAhead("saveState");
         exec_.synchronize();
-        auto put = [&](const std::string& name, auto& buf) {
+        forEachStateArray([&](const std::string& name, auto& buf, bool) {
             std::vector<std::remove_pointer_t<decltype(buf.data())>> host;
             copyToHost(buf, host);
             out.putArray("engine/" + name, host);
-        };
-        p_.forEachNamedField([&](const char* name, auto& buf, unsigned flags) {
-            if ((flags & physics::kCheckpoint) && !buf.empty()) put(std::string("field/") + name, buf);
         });
-        put("cell_start_bound", cs_bound_);
-        put("cell_start_fluid", cs_fluid_);
-        put("near", near_);
-        put("motions", motions_);
         if (solid_.n > 0) {
-            put("solid_motions", solid_motions_);
-            solid_.forEachState([&](const char* name, auto& buf) { put(std::string("solid/") + name, buf); });
             out.reals["engine/solid_t0"] = solid_.t0;
             out.reals["engine/solid_span"] = solid_.span;
         }
@@ -374,7 +365,7 @@ public:
         expect("nbound", nbound_);
         expect("nsolid", solid_.n);
         expect("ncells", setup_.grid.cellCount());
-        auto get = [&](const std::string& name, auto& buf, bool same_size) {
+        forEachStateArray([&](const std::string& name, auto& buf, bool same_size) {
             using T = std::remove_pointer_t<decltype(buf.data())>;
             const std::vector<T> host = in.getArray<T>("engine/" + name);
             if (same_size && host.size() != buf.size())
@@ -382,17 +373,8 @@ public:
                             " elements, this run has " + std::to_string(buf.size()) +
                             " (a run with other options wrote it)");
             assignFrom(buf, host);
-        };
-        p_.forEachNamedField([&](const char* name, auto& buf, unsigned flags) {
-            if ((flags & physics::kCheckpoint) && !buf.empty()) get(std::string("field/") + name, buf, true);
         });
-        get("cell_start_bound", cs_bound_, true);
-        get("cell_start_fluid", cs_fluid_, true);
-        get("near", near_, true);
-        get("motions", motions_, false);
         if (solid_.n > 0) {
-            get("solid_motions", solid_motions_, false);
-            solid_.forEachState([&](const char* name, auto& buf) { get(std::string("solid/") + name, buf, true); });
             solid_.t0 = in.real("engine/solid_t0");
             solid_.span = in.real("engine/solid_span");
         }
@@ -403,6 +385,23 @@ public:
     }
 
 private:
+    /// Every array of a restart file, by name, and whether its size is the run's (the one list
+    /// saveState and loadState go through).
+    template <class F>
+    void forEachStateArray(F&& f) {
+        p_.forEachNamedField([&](const char* name, auto& buf, unsigned flags) {
+            if ((flags & physics::kCheckpoint) && !buf.empty()) f(std::string("field/") + name, buf, true);
+        });
+        f("cell_start_bound", cs_bound_, true);
+        f("cell_start_fluid", cs_fluid_, true);
+        f("near", near_, true);
+        f("motions", motions_, false);
+        if (solid_.n > 0) {
+            f("solid_motions", solid_motions_, false);
+            solid_.forEachState([&](const char* name, auto& buf) { f(std::string("solid/") + name, buf, true); });
+        }
+    }
+
     /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
