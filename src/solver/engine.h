@@ -111,62 +111,6 @@ public:
     }
     bool forcesAhead() const override { return ahead_.on; }
 
-private:
-    /// Whether a divide may only refresh PosCell (a skin, and sorted once).
-    bool refreshes() const { return sorted_ && setup_.grid.skinf > 0.f; }
-    /// Only moving boundaries and solids move in the boundary block.
-    std::uint32_t refreshBegin() const { return setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_; }
-
-    /// The sort of a divide (see Backend::divide).
-    void sortAll(bool keep_step_start) {
-        ++counts_.sorts;
-        sorted_ = true;
-        const bool pre = !setup_.symplectic || keep_step_start;
-        // Moving boundaries and solid particles move inside the boundary block: re-sort it, and
-        // find the solid particles again. Fixed walls stay as init sorted them.
-        if (setup_.nmoving > 0 || solid_.n > 0) {
-            sortRange(0, nbound_, cs_bound_, pre);
-            nearFlags(cs_bound_, physics::kNearBound);
-            updateSolidSlots();
-        }
-        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
-        nearFlags(cs_fluid_, physics::kNearFluid);
-        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
-    }
-
-    /// A force evaluation launched by divideThenForces, not yet taken by computeForces. `gated`:
-    /// the divide's verdict (sort or not) is still on the device, and a sort makes the
-    /// evaluation's passes do nothing.
-    struct ForcesAhead {
-        bool on = false, gated = false, keep = false;
-    };
-
-    /// Before reading the particles between two steps: a divide whose verdict is still out
-    /// is completed. With no sort the forces launched ahead stand; with a sort they did
-    /// nothing (gated), and computeForces evaluates them again.
-    void settleDivide() {
-        if (!ahead_.on || !ahead_.gated) return;
-        ahead_.gated = false;
-        if (refresh_.get() == 0u) return;
-        ahead_.on = false;
-        sortAll(ahead_.keep);
-    }
-    /// What changes the state cannot run between divideThenForces and computeForces (the
-    /// evaluation launched ahead would be stale, and the SPS stress, mDBC's boundary values and
-    /// the solids' hydrodynamic force it wrote could not be taken back).
-    void noForcesAhead(const char* what) const {
-        if (ahead_.on)
-            throw std::logic_error(std::string("Engine::") + what +
-                                   " called between divideThenForces and computeForces");
-    }
-    /// init, loadState: whatever was launched ahead is finished and forgotten.
-    void dropForcesAhead() {
-        if (ahead_.on) exec_.synchronize();
-        ahead_ = ForcesAhead{};
-    }
-
-public:
-
     void applyMotion(const std::vector<physics::RigidMotionGpu>& motions) override {
         noForcesAhead("applyMotion");
         if (setup_.nmoving == 0 || nbound_ == 0) return;
@@ -177,43 +121,13 @@ public:
     }
 
     physics::DtMaxima computeForces() override {
+        settleDivide();  // a sort drops the evaluation launched ahead (it did nothing)
         if (ahead_.on) {
-            const physics::DtMaxima m = dt_ahead_.get();
-            const bool sort = ahead_.gated && refresh_.get() != 0u;
             ahead_.on = false;
-            if (!sort) return m;
-            sortAll(ahead_.keep);
+            return dt_ahead_.get();
         }
         return evaluateForces(false);
     }
-
-private:
-    /// The pressures, the pair loops and the dt maxima (with SPS, the stress for the next
-    /// evaluation, which DualSPHysics lags by one evaluation, in the dt reduction's launch);
-    /// `ahead`: the maxima go to dt_ahead_ without waiting (divideThenForces).
-    physics::DtMaxima evaluateForces(bool ahead) {
-        ForceArgs a = forceArgs();
-        if (solid_.n > 0) {  // the hydrodynamic force on the solids, in the boundary loop's launch
-            a.hydro_slot = solid_.slot.data();
-            a.nhydro = solid_.n;
-            a.hydro_out = solid_.fluid_force.data();
-        }
-        const physics::FluidConstants& c = setup_.fluid;
-        pressures(a);
-        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
-            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
-        });
-        auto maxima = [&](const auto& pass) {
-            if (!ahead) return exec_.reduce(0u, a.np, physics::DtMaxima{}, pass, DtMaximaCombine{});
-            exec_.reduceDeferred(0u, a.np, physics::DtMaxima{}, pass, DtMaximaCombine{}, dt_ahead_);
-            return physics::DtMaxima{};
-        };
-        if (setup_.physics.visco == physics::Viscosity::LaminarSps)
-            return maxima(DtMaximaPass<true>{a.nbound, a.v, c.dt_all_particles != 0, c.sps_smag, c.sps_blin});
-        return maxima(DtMaximaPass<false>{a.nbound, a.v, c.dt_all_particles != 0});
-    }
-
-public:
 
     void symplecticPredictor(double dt) override {
         noForcesAhead("symplecticPredictor");
@@ -385,6 +299,84 @@ public:
     }
 
 private:
+    /// Whether a divide may only refresh PosCell (a skin, and sorted once).
+    bool refreshes() const { return sorted_ && setup_.grid.skinf > 0.f; }
+    /// Only moving boundaries and solids move in the boundary block.
+    std::uint32_t refreshBegin() const { return setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_; }
+
+    /// The sort of a divide (see Backend::divide).
+    void sortAll(bool keep_step_start) {
+        ++counts_.sorts;
+        sorted_ = true;
+        const bool pre = !setup_.symplectic || keep_step_start;
+        // Moving boundaries and solid particles move inside the boundary block: re-sort it, and
+        // find the solid particles again. Fixed walls stay as init sorted them.
+        if (setup_.nmoving > 0 || solid_.n > 0) {
+            sortRange(0, nbound_, cs_bound_, pre);
+            nearFlags(cs_bound_, physics::kNearBound);
+            updateSolidSlots();
+        }
+        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
+        nearFlags(cs_fluid_, physics::kNearFluid);
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
+    }
+
+    /// A force evaluation launched by divideThenForces, not yet taken by computeForces. `gated`:
+    /// the divide's verdict (sort or not) is still on the device, and a sort makes the
+    /// evaluation's passes do nothing.
+    struct ForcesAhead {
+        bool on = false, gated = false, keep = false;
+    };
+
+    /// Before reading the particles between two steps: a divide whose verdict is still out
+    /// is completed. With no sort the forces launched ahead stand; with a sort they did
+    /// nothing (gated), and computeForces evaluates them again.
+    void settleDivide() {
+        if (!ahead_.on || !ahead_.gated) return;
+        ahead_.gated = false;
+        if (refresh_.get() == 0u) return;
+        ahead_.on = false;
+        sortAll(ahead_.keep);
+    }
+    /// What changes the state cannot run between divideThenForces and computeForces (the
+    /// evaluation launched ahead would be stale, and the SPS stress, mDBC's boundary values and
+    /// the solids' hydrodynamic force it wrote could not be taken back).
+    void noForcesAhead(const char* what) const {
+        if (ahead_.on)
+            throw std::logic_error(std::string("Engine::") + what +
+                                   " called between divideThenForces and computeForces");
+    }
+    /// init, loadState: whatever was launched ahead is finished and forgotten.
+    void dropForcesAhead() {
+        if (ahead_.on) exec_.synchronize();
+        ahead_ = ForcesAhead{};
+    }
+
+    /// The pressures, the pair loops and the dt maxima (with SPS, the stress for the next
+    /// evaluation, which DualSPHysics lags by one evaluation, in the dt reduction's launch);
+    /// `ahead`: the maxima go to dt_ahead_ without waiting (divideThenForces).
+    physics::DtMaxima evaluateForces(bool ahead) {
+        ForceArgs a = forceArgs();
+        if (solid_.n > 0) {  // the hydrodynamic force on the solids, in the boundary loop's launch
+            a.hydro_slot = solid_.slot.data();
+            a.nhydro = solid_.n;
+            a.hydro_out = solid_.fluid_force.data();
+        }
+        const physics::FluidConstants& c = setup_.fluid;
+        pressures(a);
+        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
+            ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
+        });
+        auto maxima = [&](const auto& pass) {
+            if (!ahead) return exec_.reduce(0u, a.np, physics::DtMaxima{}, pass, DtMaximaCombine{});
+            exec_.reduceDeferred(0u, a.np, physics::DtMaxima{}, pass, DtMaximaCombine{}, dt_ahead_);
+            return physics::DtMaxima{};
+        };
+        if (setup_.physics.visco == physics::Viscosity::LaminarSps)
+            return maxima(DtMaximaPass<true>{a.nbound, a.v, c.dt_all_particles != 0, c.sps_smag, c.sps_blin});
+        return maxima(DtMaximaPass<false>{a.nbound, a.v, c.dt_all_particles != 0});
+    }
+
     /// Every array of a restart file, by name, and whether its size is the run's (the one list
     /// saveState and loadState go through).
     template <class F>

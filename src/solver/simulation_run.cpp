@@ -52,16 +52,22 @@ double nextOutputTime(double next, double t, double tout) {
     return k > t ? k : std::nextafter(t, HUGE_VAL);
 }
 
+/// The loop's thresholds (run() and aheadBefore share them): it goes on while t is below
+/// endOf(TimeMax); an output is due from outputFrom(next output time), a checkpoint from
+/// checkpointFrom(next checkpoint time).
+double endOf(double tmax) { return tmax - 1e-12 * tmax; }
+double outputFrom(double next_out, double tout) { return next_out - 1e-9 * tout; }
+double checkpointFrom(double next_checkpoint, double interval) { return next_checkpoint - 1e-9 * interval; }
+
 }  // namespace
 
 double Simulation::aheadBefore(double next_out, double next_checkpoint) const {
     const SolverParameters& p = case_.params;
-    // The loop's tests (run() below, GaugeSystem::evaluate) with t in place of the step end:
-    // t < tmax - 1e-12 tmax (the loop goes on), t < next_out - 1e-9 TimeOut (no output),
-    // t < next_checkpoint - 1e-9 interval (no checkpoint). A gauge is due from its next time
-    // less 1e-12 max(1, |t|): 1e-11 keeps clear of it.
-    double before = std::min({p.time_max - 1e-12 * p.time_max, next_out - 1e-9 * p.time_out,
-                              next_checkpoint - 1e-9 * opt_.checkpoint_interval});
+    // The loop's thresholds (above; an output is also due at t >= TimeMax, which the first
+    // covers). A gauge is due from its next time less 1e-12 max(1, |t|)
+    // (GaugeSystem::evaluate): 1e-11 keeps clear of it.
+    double before = std::min({endOf(p.time_max), outputFrom(next_out, p.time_out),
+                              checkpointFrom(next_checkpoint, opt_.checkpoint_interval)});
     if (gauges_ && std::isfinite(gauges_->nextTime())) {
         const double g = gauges_->nextTime();
         before = std::min(before, g - 1e-11 * std::max(1.0, std::fabs(g)));
@@ -116,7 +122,7 @@ RunSummary Simulation::run() {
     // on one step later, at the end of a step that launched nothing ahead.
     bool terminate_pending = false;
     sum_.stop_reason = "TimeMax reached";
-    while (t < tmax - 1e-12 * tmax) {
+    while (t < endOf(tmax)) {
         if (max_steps >= 0 && step >= max_steps) {
             sum_.stop_reason = "step limit (-nsteps) reached";
             break;
@@ -147,14 +153,14 @@ RunSummary Simulation::run() {
         if (gauges_) gauges_->evaluate(t, *backend_);
         const std::uint32_t active = backend_->activeFluid();
         if (!warned_out) warned_out = warnExcludedFluid(log_, case_, active);
-        const bool output_due = t >= next_out - 1e-9 * tout || t >= tmax;
+        const bool output_due = t >= outputFrom(next_out, tout) || t >= tmax;
         if (!checkStep(t, step, done.dt, active, ctx.counters().dtmin_hits, output_due)) break;
         if (output_due) {
             if (!output(t, step)) break;
             next_out = nextOutputTime(next_out, t, tout);
         }
         progress.afterStep(t, step, done.dt, active, ctx.counters().dtmin_hits);
-        if (t >= next_checkpoint - 1e-9 * opt_.checkpoint_interval) {  // -checkpoint
+        if (t >= checkpointFrom(next_checkpoint, opt_.checkpoint_interval)) {  // -checkpoint
             saveCheckpoint(loopState(), *stepper, ctx);
             next_checkpoint = nextCheckpoint(t);
         }

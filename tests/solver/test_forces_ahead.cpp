@@ -8,12 +8,11 @@
 ///        refreshed (both verdicts taken), with outputs between the steps, for Verlet with the
 ///        SPS stress and a moving piston, symplectic with mDBC, and a VCPM gate with gauges on
 ///        both schemes.
-///        Broken on purpose, each failed here: computeForces() keeping the evaluation launched
-///        ahead when the verdict was a sort (the symplectic cases: their mid-step divide is
-///        settled there), settleDivide() taking every verdict for "no sort" (Verlet, the gate),
-///        the gate left off the evaluation's passes (Verlet with SPS, the gate), and
-///        settleDivide() dropping a valid evaluation, evaluated again (the SPS cases and the
-///        contract test below: the SPS stress then lags twice).
+///        Broken on purpose, each failed here: settleDivide() taking every verdict for "no sort"
+///        (every run test: computeForces settles through it), the gate left off the
+///        evaluation's passes (Verlet with SPS, the gate), and settleDivide() dropping a valid
+///        evaluation, evaluated again (the SPS cases and the contract test below: the SPS
+///        stress then lags twice).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
