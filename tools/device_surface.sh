@@ -13,7 +13,16 @@
 #  4. liao: DualSPHysics' FlexStruc Liao 2D case as shipped (shared/dualsphysics-cases), plate
 #     top's horizontal displacement (tools/solid_marker.py; series in $OUT/liao2d_top_sc*.csv).
 # Writes $OUT/surface.txt. Usage: tools/device_surface.sh [parity|cantilever|plate|beam|liao]...
+# SC_LIST (default "0 1"): the lattices compared: 0 plain, 1 corrected (VcpmRowBending 1, the
+# default), 1r0 corrected without the rows' bending (VcpmRowBending 0).
 set -uo pipefail
+SC_LIST=${SC_LIST:-0 1}
+scparams() {  # the <parameter> lines of one SC_LIST entry
+  case $1 in
+    1r0) echo '<parameter key="VcpmSurfaceCorrection" value="1" /><parameter key="VcpmRowBending" value="0" />' ;;
+    *) echo "<parameter key=\"VcpmSurfaceCorrection\" value=\"$1\" />" ;;
+  esac
+}
 parts=("$@")
 [[ ${#parts[@]} -eq 0 ]] && parts=(parity cantilever plate liao)
 WORK_NAME=seaspring_surface TABLE_NAME=surface.txt
@@ -36,11 +45,11 @@ fi
 if want cantilever; then
   echo "== 3D cantilever, gravity step 1 m/s^2, first frequency (GPU)" | tee -a "$table"
   for nu in 0.3 0.49; do
-    for sc in 0 1; do
+    for sc in $SC_LIST; do
       sed -e '/<pointload/d' -e 's|<gravity x="0" y="0" z="0"|<gravity x="0" y="0" z="-1"|' \
         -e "s|poissratio=\"0.3\"|poissratio=\"$nu\"|" \
         -e 's|</vcpmsolids>|</vcpmsolids><gauges><default><computedt value="0.0001" /><output value="true" /></default><solidmarker name="Tip"><point x="0.1" y="0.005" z="0.005" /><target mkbound="1" /></solidmarker></gauges>|' \
-        -e "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+        -e "s|<parameters>|<parameters>$(scparams "$sc")|" \
         -e 's|<parameter key="TimeMax" value="0.5"|<parameter key="TimeMax" value="0.1"|' \
         -e 's|<parameter key="TimeOut" value="0.005"|<parameter key="TimeOut" value="0.05"|' \
         "$root/cases/cantilever3d_tipload/CantileverTipLoad3D_Def.xml" >"$work/Cl_${nu}_$sc.xml"
@@ -86,8 +95,8 @@ fi
 
 if want plate; then
   echo "== hydrostatic plate, mean mid-span deflection 0.01-0.1 s / analytic 6.860e-5 m (GPU)" | tee -a "$table"
-  for sc in 0 1; do
-    sed "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+  for sc in $SC_LIST; do
+    sed "s|<parameters>|<parameters>$(scparams "$sc")|" \
       "$root/cases/hydrostatic_plate/HydrostaticPlate_Def.xml" >"$work/Plate_$sc.xml"
     for dp in 0.0125 0.00625; do
       c="plate_${sc}_$dp"
@@ -108,8 +117,8 @@ EOF
 fi
 if want beam; then
   echo "== hanging beam (seed 000 3.1), free-end displacement / 1D bar rho g L^2/(2E) = 1.4715 mm, 5 s damped (GPU)" | tee -a "$table"
-  for sc in 0 1; do
-    sed "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+  for sc in $SC_LIST; do
+    sed "s|<parameters>|<parameters>$(scparams "$sc")|" \
       "$root/cases/hanging_beam/HangingBeam_Def.xml" >"$work/Beam_$sc.xml"
     for dp in 0.02 0.01 0.005; do
       c="beam_${sc}_$dp"
@@ -134,8 +143,8 @@ if want liao; then
   echo "== DualSPHysics' FlexStruc Liao 2D as shipped (CaseDambreak2D_FSI_Def.xml: dp 2 mm, plate 8 mm = 4 particles," | tee -a "$table"
   echo "   nu 0.49, plane strain, TimeMax 1 s): plate top (0.6, 0, 0.09) horizontal displacement (GPU)" | tee -a "$table"
   cp "$root/build-dev/shared-cases/flexstruc/DambreakGateTimeSeries.csv" "$work/"
-  for sc in 0 1; do
-    sed "s|<parameters>|<parameters><parameter key=\"VcpmSurfaceCorrection\" value=\"$sc\" />|" \
+  for sc in $SC_LIST; do
+    sed "s|<parameters>|<parameters>$(scparams "$sc")|" \
       "$root/build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml" >"$work/Liao_$sc.xml"
     c="liao_$sc"
     "$bin/gencase" "$work/Liao_$sc.xml" "$work/$c" >"$work/$c.gencase.log" 2>&1 || tail -3 "$work/$c.gencase.log"

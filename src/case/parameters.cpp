@@ -172,6 +172,7 @@ SolverParameters readParameters(const ParameterTable& t) {
     if (p.vcpm_contact_damping > 1) t.fail("VcpmContactDamping", "is a fraction of critical damping: must be <= 1");
     p.vcpm_contact_friction = t.atLeast("VcpmContactFriction", 0, true);
     p.vcpm_surface_correction = t.choice("VcpmSurfaceCorrection", {0, 1}, "0 none (the plain lattice), 1 surface correction (springs, volumetric weights, clamp bonds)");
+    p.vcpm_row_bending = t.choice("VcpmRowBending", {0, 1}, "0 none, 1 the rows' own bending (with VcpmSurfaceCorrection 1)");
     p.vcpm_substep_bound = t.choice("VcpmSubStepBound", {0, 1}, "0 Gershgorin's bounds, 1 the bodies' largest stiffness eigenvalues");
     p.time_out = t.atLeast("TimeOut", 0, false);
     if (t.number("TimeOutExtra") > 0)

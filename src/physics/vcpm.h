@@ -28,6 +28,7 @@
 #include "core/host_device.h"
 #include "physics/blowup_bounds.h"
 #include "physics/sph_types.h"
+#include "physics/vcpm_rows.h"
 
 namespace seaspring::physics {
 
@@ -50,6 +51,7 @@ struct VcpmMaterial {
     double damp_rate = 0; ///< c_d [1/s]: damping force -m c_d v (Eq. 11; 0 = none)
     double crit_stretch = 0;  ///< a bond breaks when (|r|-L0)/L0 > this; <= 0: never
     double max_speed = 1e300; ///< blow-up bound on a particle's speed [m/s] (blowup_bounds.h)
+    double row_k = 0;         ///< k_r of the rows' own bending (vcpm_rows.h; 0 without it)
 };
 
 /// Elastic and time-step properties of a material (host).
@@ -126,6 +128,13 @@ struct SolidBonds {
     /// S*, and the mirror slot's in the partner's (1 for a clamp node).
     const double* vw = nullptr;
     const double* vw_partner = nullptr;
+    /// The rows' own bending (null: none; vcpm_rows.h): for axis a and side (0: -, 1: +), the
+    /// slot of the particle's first-neighbour bond at (2a + side) * n + s (kNoRowSlot: none),
+    /// and the curvature d of its row triplet along a at a * n + s, written by solidSumAt
+    /// (0 where the triplet does not exist).
+    const std::uint8_t* row_slot = nullptr;
+    Double3* row_d = nullptr;
+    int row_axes = 0;  ///< 2 (x, z) in 2D, 3 in 3D
 };
 
 /// Clamp nodes: the boundary particles that clamp bonds reach. Their positions are prescribed
@@ -253,9 +262,56 @@ SEASPRING_HD inline Double3 pointLoadAt(const SolidState& st, std::uint32_t s, d
     return Double3{a.x + r.x * t, a.y + r.y * t, a.z + r.z * t};
 }
 
+/// The position of the partner of bond slot k (slot-major index) at positions `ep` (a clamp
+/// node's at time fraction f).
+SEASPRING_HD inline Double3 bondPartnerPos(std::uint32_t k, const Double3* ep, const SolidBonds& b,
+                                           const ClampNodes& cn, double f) {
+    return (b.flags[k] & kBondClamp) ? clampPosAt(cn, b.partner[k], f) : ep[b.partner[k]];
+}
+
+/// The curvatures d of solid particle s's row triplets at positions `ep` (vcpm_rows.h), into
+/// b.row_d: 0 along an axis where s lacks an intact first-neighbour bond on either side. Called
+/// by solidSumAt once s's bonds' breakage is decided.
+SEASPRING_HD inline void solidRowCurvaturesAt(std::uint32_t s, const Double3* ep, const SolidBonds& b,
+                                              const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    for (int a = 0; a < b.row_axes; ++a) {
+        const std::uint8_t qm = b.row_slot[std::uint32_t(2 * a) * b.n + s];
+        const std::uint8_t qp = b.row_slot[std::uint32_t(2 * a + 1) * b.n + s];
+        Double3 d{0, 0, 0};
+        if (qm != kNoRowSlot && qp != kNoRowSlot) {
+            const std::uint32_t km = std::uint32_t(qm) * b.n + s, kp = std::uint32_t(qp) * b.n + s;
+            if (!b.broken[km] && !b.broken[kp]) d = rowCurvature(bondPartnerPos(km, ep, b, cn, f), p, bondPartnerPos(kp, ep, b, cn, f));
+        }
+        b.row_d[std::uint32_t(a) * b.n + s] = d;
+    }
+}
+
+/// The rows' bending force on solid particle s (vcpm_rows.h) from the curvatures of pass 1:
+/// along each axis, -k_r (d_minus - 2 d_s + d_plus) with the triplets centred at s's neighbours
+/// on that axis (0 for a clamp node or a missing bond; a broken bond's partner has d = 0 there).
+SEASPRING_HD inline Double3 solidRowForceAt(std::uint32_t s, const SolidBonds& b, double k_r) {
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    for (int a = 0; a < b.row_axes; ++a) {
+        Double3 dn[2] = {Double3{0, 0, 0}, Double3{0, 0, 0}};
+        for (int side = 0; side < 2; ++side) {
+            const std::uint8_t q = b.row_slot[std::uint32_t(2 * a + side) * b.n + s];
+            if (q == kNoRowSlot) continue;
+            const std::uint32_t k = std::uint32_t(q) * b.n + s;
+            if (!(b.flags[k] & kBondClamp)) dn[side] = b.row_d[std::uint32_t(a) * b.n + b.partner[k]];
+        }
+        const Double3 g = rowBendingForce(k_r, dn[0], b.row_d[std::uint32_t(a) * b.n + s], dn[1]);
+        fx += g.x;
+        fy += g.y;
+        fz += g.z;
+    }
+    return Double3{fx, fy, fz};
+}
+
 /// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
 /// its bonds (the partner decides the mirror slot with the same bits; a bond with an end
-/// outside st.keep breaks too) and returns S_s = sum of dl over its intact bonds. `f`: time
+/// outside st.keep breaks too) and returns S_s = sum of dl over its intact bonds; with the
+/// rows' bending, writes s's row curvatures (solidRowCurvaturesAt). `f`: time
 /// fraction for the clamp nodes. Raises s's alarm for a position that is not finite or an
 /// intact bond strained past kMaxBondStrain.
 SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st,
@@ -283,6 +339,7 @@ SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const 
         const double dl = halfElongation(len, rest);
         sum += br ? 0.0 : (b.vw ? b.vw[k] * dl : dl);
     }
+    if (b.row_d) solidRowCurvaturesAt(s, ep, b, cn, f);
     return sum;
 }
 
@@ -313,7 +370,7 @@ SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const 
 }
 
 /// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12), from the
-/// sums of pass 1.
+/// sums of pass 1, plus the rows' bending force from its row curvatures (vcpm_rows.h).
 SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
                                              const SolidBonds& b, const ClampNodes& cn, double f) {
     const Double3 p = ep[s];
@@ -336,6 +393,12 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
         fx += fm * dx;
         fy += fm * dy;
         fz += fm * dz;
+    }
+    if (b.row_d) {
+        const Double3 fr = solidRowForceAt(s, b, m.row_k);
+        fx += fr.x;
+        fy += fr.y;
+        fz += fr.z;
     }
     return Double3{fx, fy, fz};
 }

@@ -23,6 +23,9 @@ struct SolidArrays {
     Buf<std::uint8_t> count, flags, broken, broken_saved;
     Buf<std::uint32_t> partner, slot;
     Buf<double> rest, sum, work, kfac, vw, vw_partner;
+    Buf<std::uint8_t> row_slot;     ///< the rows' bending (empty without it; physics/vcpm_rows.h)
+    Buf<physics::Double3> row_d;    ///< its row curvatures, written by every sums pass
+    int row_axes = 0;
     Buf<std::uint16_t> body;
     Buf<physics::VcpmMaterial> materials;
     Buf<physics::Double3> pos, pos_half, vel, vel0, fluid_force;
@@ -59,6 +62,9 @@ struct SolidArrays {
         assignFrom(kfac, s.kfac);
         assignFrom(vw, s.vw);
         assignFrom(vw_partner, s.vw_partner);
+        row_axes = s.row_slot.empty() ? 0 : s.row_axes;
+        assignFrom(row_slot, s.row_slot);
+        assignFrom(row_d, std::vector<physics::Double3>(std::size_t(row_axes) * n, zero3));
         assignFrom(broken, std::vector<std::uint8_t>(s.flags.size(), 0));
         assignFrom(body, s.body);
         assignFrom(materials, s.materials);
@@ -133,6 +139,11 @@ struct SolidArrays {
         b.kfac = kfac.empty() ? nullptr : kfac.data();
         b.vw = vw.empty() ? nullptr : vw.data();
         b.vw_partner = vw_partner.empty() ? nullptr : vw_partner.data();
+        if (row_axes > 0) {
+            b.row_slot = row_slot.data();
+            b.row_d = row_d.data();
+            b.row_axes = row_axes;
+        }
         return b;
     }
 

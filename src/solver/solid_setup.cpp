@@ -50,6 +50,7 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
         mat.max_speed = physics::solidSpeedBound(el.wave_speed, c.constants.speedsound);
         s.materials.push_back(mat);
         s.poisson.push_back(poisson);
+        s.lattice_young.push_back(young);
         s.elastic_dt.push_back(physics::vcpmTimeStep(c.params.vcpm_dt_coef, dp, el.wave_speed));
         s.dt_scale.push_back(1.0);
         dt = std::min(dt, s.elastic_dt.back());
@@ -207,8 +208,34 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
             s.clamp_slot[k] = l[q].second;
         }
     }
+    if (c.params.vcpm_surface_correction && c.params.vcpm_row_bending) rowBending(s, dp);
     if (c.params.vcpm_surface_correction) surfaceCorrection(s, c.params.vcpm_substep_bound);
     return s;
+}
+
+void rowBending(SolidSetup& s, double dp) {
+    const std::uint32_t n = s.nsolid;
+    s.row_axes = s.dim == 3 ? 3 : 2;
+    s.row_slot.assign(std::size_t(2 * s.row_axes) * n, physics::kNoRowSlot);
+    for (std::uint32_t r = 0; r < n; ++r)
+        for (int q = 0; q < s.count[r]; ++q) {
+            const std::size_t k = std::size_t(q) * n + r;
+            if (s.flags[k] & physics::kBondSecond) continue;
+            const physics::Double3 pj = (s.flags[k] & physics::kBondClamp) ? s.clamp_pos[s.partner[k]] : s.pos[s.partner[k]];
+            const double v[3] = {pj.x - s.pos[r].x, pj.y - s.pos[r].y, pj.z - s.pos[r].z};
+            int d = 0;  // the lattice axis of a first-neighbour bond: its largest component
+            for (int e = 1; e < 3; ++e)
+                if (std::fabs(v[e]) > std::fabs(v[d])) d = e;
+            const int a = s.dim == 2 ? (d == 2 ? 1 : 0) : d;
+            s.row_slot[std::size_t(2 * a + (v[d] > 0 ? 1 : 0)) * n + r] = std::uint8_t(q);
+        }
+    for (std::size_t b = 0; b < s.materials.size(); ++b) {
+        // The lattice's own material (plane stress: its plane-strain equivalent, whose uniaxial
+        // modulus is the sheet's E).
+        const double young = s.lattice_young[b], nu = s.poisson[b];
+        s.materials[b].row_k = physics::rowBendingStiffness(s.dim, physics::latticeUniaxialModulus(s.dim, young, nu), dp);
+        if (b < s.body_lines.size()) s.body_lines[b] += ", rows' bending k_r " + shortText(s.materials[b].row_k, 6);
+    }
 }
 
 void surfaceCorrection(SolidSetup& s, int substep_bound) {

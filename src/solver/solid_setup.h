@@ -28,9 +28,15 @@ struct SolidSetup {
     std::vector<std::uint8_t> flags;         ///< physics::VcpmBondFlag
     std::vector<double> kfac;                ///< surface correction of each slot's stiffness (empty: none)
     std::vector<double> vw, vw_partner;      ///< volumetric weights of each slot and of its mirror (empty: none)
+    /// The rows' bending (VcpmRowBending; empty: none): per axis a and side (0 -, 1 +), the slot
+    /// of each particle's first-neighbour bond at (2a + side) * nsolid + r (physics::kNoRowSlot:
+    /// none); row_axes 2 (x, z) in 2D, 3 in 3D.
+    std::vector<std::uint8_t> row_slot;
+    int row_axes = 0;
     std::vector<std::uint16_t> body;         ///< [nsolid] material index
     std::vector<physics::VcpmMaterial> materials;
     std::vector<double> poisson;             ///< the lattice's Poisson's ratio of each body (plane stress: nu')
+    std::vector<double> lattice_young;       ///< the lattice's Young's modulus of each body (plane stress: E')
     std::vector<physics::Double3> pos, vel;  ///< initial state [nsolid]
     std::vector<double> mass;                ///< [nsolid] rho_S dp^D (reports)
     /// Point loads per particle, F = load_force + load_rate t (both empty without loads).
@@ -69,6 +75,10 @@ SolidSetup makeSolidSetup(const SolverCase& c);
 /// the bonds and the particles' initial positions, and scales each body's sub-step by the
 /// corrected lattice's stability margin (solid_stability.h; `substep_bound`: VcpmSubStepBound).
 void surfaceCorrection(SolidSetup& s, int substep_bound = 0);
+
+/// VcpmRowBending: fills `row_slot` (each particle's first-neighbour bonds along each lattice
+/// axis, from the rest vectors) and each body's k_r (physics/vcpm_rows.h).
+void rowBending(SolidSetup& s, double dp);
 
 /// Broken-bond count of every solid particle (host, from the slot states).
 std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken);

@@ -316,7 +316,28 @@ double latticeEnergy(const solver::SolidSetup& so, const solver::HostState& st) 
     double volumetric = 0;
     for (double v : s_solid) volumetric += t_half * v * v;
     for (const auto& [id, v] : s_clamp) volumetric += t_half * v * v;
-    return springs + volumetric;
+    // The rows' bending (VcpmRowBending 1): 1/2 k_r |r+ - 2 r + r-|^2 wherever a particle has
+    // intact first-neighbour bonds on both sides along an axis of the lattice (the sides found
+    // from the initial positions, not from the set-up's row slots).
+    double rows = 0;
+    for (std::uint32_t s = 0; !so.row_slot.empty() && s < so.nsolid; ++s)
+        for (int c = 0; c < 3; ++c) {
+            std::int64_t side[2] = {-1, -1};
+            for (int q = 0; q < so.count[s]; ++q) {
+                const std::size_t k = std::size_t(q) * so.nsolid + s;
+                if (st.bond_broken[k] || (so.flags[k] & physics::kBondSecond)) continue;
+                const bool clamp = (so.flags[k] & physics::kBondClamp) != 0;
+                const physics::Double3 p0 = clamp ? so.clamp_pos[so.partner[k]] : so.pos[so.partner[k]];
+                const double v[3] = {p0.x - so.pos[s].x, p0.y - so.pos[s].y, p0.z - so.pos[s].z};
+                if (std::fabs(v[c]) < 0.5 * so.rest[k]) continue;
+                side[v[c] > 0 ? 1 : 0] = clamp ? std::int64_t(so.clamp_id[so.partner[k]]) : std::int64_t(so.first_solid + so.partner[k]);
+            }
+            if (side[0] < 0 || side[1] < 0) continue;
+            const physics::Double3 a = st.pos[std::size_t(side[0])], b = st.pos[std::size_t(side[1])], o = st.pos[so.first_solid + s];
+            const double dx = a.x + b.x - 2 * o.x, dy = a.y + b.y - 2 * o.y, dz = a.z + b.z - 2 * o.z;
+            rows += 0.5 * so.materials[so.body[s]].row_k * (dx * dx + dy * dy + dz * dz);
+        }
+    return springs + volumetric + rows;
 }
 
 /// Column `name` of a CSV file with a header row.
@@ -339,87 +360,98 @@ std::vector<double> csvColumn(const std::string& text, const std::string& name) 
 }  // namespace
 
 TEST(SolidCoupling, LedgerWorkEqualsTheSolidEnergyChange) {
-    const std::string dir = scratch("ledger");
-    const std::string kase = test::generateCaseFile(dir, "plate", caseDef(kPlateDef), 0.025);
-    const solver::SolverCase c = solver::loadSolverCase(kase);
-    const solver::SolidSetup so = solver::makeSolidSetup(c);
-    ASSERT_EQ(so.materials.size(), 1u);
-    ASSERT_EQ(so.materials[0].damp_rate, 0.0);
-    ASSERT_LE(so.materials[0].crit_stretch, 0.0);
-    const double gz = c.constants.gravity.z;
-    for (int coupling : {2, 1}) {
-        const std::string out = dir + "/out" + std::to_string(coupling);
-        std::vector<double> ts, work, energy, solid_work;
-        double e0 = 0, max_dj = 0, max_dw = 0, jscale = 0, wscale = 0, t_prev = 0, w_prev = 0;
-        physics::Double3 j_prev{0, 0, 0};
-        std::vector<physics::Double3> r_prev(so.pos);
-        std::size_t broken = 0;
-        // An output after every fluid step (TimeOut below the step).
-        const auto r = test::runCpu(
-            kase, out, 2,
-            [&](solver::RunOptions& o) {
-                o.tmax = 0.02;
-                o.tout = 1e-6;
-                o.vcpm_coupling = coupling;
-            },
-            [&](double t, long long, const solver::HostState& st) {
-                double kin = 0, pot = 0, w = 0;
-                physics::Double3 j{0, 0, 0}, jstep{0, 0, 0};
-                double wstep = 0;
-                for (std::uint32_t s = 0; s < so.nsolid; ++s) {
-                    const physics::Double3 v = st.solid_vel[s], p = st.pos[so.first_solid + s], f = st.solid_force[s];
-                    kin += 0.5 * so.mass[s] * (v.x * v.x + v.y * v.y + v.z * v.z);
-                    pot -= so.mass[s] * gz * (p.z - so.pos[s].z);
-                    w += st.solid_work[s];
-                    j = {j.x + st.solid_impulse[s].x, j.y + st.solid_impulse[s].y, j.z + st.solid_impulse[s].z};
-                    jstep = {jstep.x + f.x, jstep.y + f.y, jstep.z + f.z};
-                    wstep += f.x * (p.x - r_prev[s].x) + f.y * (p.y - r_prev[s].y) + f.z * (p.z - r_prev[s].z);
-                    r_prev[s] = p;
-                }
-                const double e = kin + latticeEnergy(so, st) + pot;
-                if (ts.empty()) e0 = e;
-                if (!ts.empty()) {  // the step from the previous output to this one
-                    const double dt = t - t_prev;
-                    max_dj = std::max({max_dj, std::fabs(j.x - j_prev.x - jstep.x * dt),
-                                       std::fabs(j.z - j_prev.z - jstep.z * dt)});
-                    max_dw = std::max(max_dw, std::fabs(w - w_prev - wstep));
-                }
-                jscale = std::max(jscale, std::fabs(j.z));
-                wscale = std::max(wscale, std::fabs(w));
-                ts.push_back(t);
-                work.push_back(w);
-                energy.push_back(e - e0);
-                t_prev = t;
-                w_prev = w;
-                j_prev = j;
-                broken = std::max(broken, test::brokenSlots(st));
-            });
-        ASSERT_EQ(ts.size(), std::size_t(r.summary.steps + 1));
-        EXPECT_EQ(broken, 0u);
-        double max_de = 0;
-        for (std::size_t k = 0; k < ts.size(); ++k) max_de = std::max(max_de, std::fabs(work[k] - energy[k]));
-        std::printf("ledger, VcpmCoupling %d, %lld steps to %.4f s: work %.6f J, energy change %.6f J; largest "
-                    "|work - energy change| %.3e J = %.2e of the largest work %.4f J; per-step bookkeeping: "
-                    "|dJ - F dt| <= %.2e N s (impulse %.2f N s), |dW - F.dr| <= %.2e J\n",
-                    coupling, r.summary.steps, ts.back(), work.back(), energy.back(), max_de, max_de / wscale, wscale,
-                    max_dj, jscale, max_dw);
-        // Measured 1.5e-6 (VcpmCoupling 2) and 1.6e-6 (1) of the largest work over 0.02 s; at the
-        // end 0.526174 J against 0.526175 J (dp 0.0125: 0.412166 J against 0.412166 J, 7e-7).
-        EXPECT_GT(wscale, 0.1);
-        EXPECT_LT(max_de, 2e-5 * wscale) << coupling;
-        EXPECT_LT(max_dj, 1e-12 * jscale) << coupling;
-        EXPECT_LT(max_dw, 1e-12 * wscale) << coupling;
-        // The ledger file: one row per output, its columns as recomputed here (printed to 9 digits).
-        const std::string csv = readFile(out + "/ledger.csv");
-        const std::vector<double> lw = csvColumn(csv, "work"), lt = csvColumn(csv, "time");
-        const std::vector<double> lk = csvColumn(csv, "solid_kinetic"), lu = csvColumn(csv, "solid_elastic");
-        const std::vector<double> lp = csvColumn(csv, "solid_potential");
-        ASSERT_EQ(lw.size(), ts.size());
-        ASSERT_EQ(lk.size(), ts.size());
-        for (std::size_t k = 0; k < ts.size(); ++k) {
-            EXPECT_NEAR(lt[k], ts[k], 1e-8 * ts.back());
-            EXPECT_NEAR(lw[k], work[k], 1e-8 * wscale) << k;
-            EXPECT_NEAR(lk[k] + lu[k] + lp[k], energy[k] + e0, 1e-8 * wscale) << k;
+    // Both couplings on the corrected lattice, and VcpmCoupling 2 with the rows' bending
+    // (VcpmRowBending 1: its energy, 1/2 k_r |d|^2 per row triplet, in the ledger and above).
+    for (int rows : {0, 1}) {
+        const std::string dir = scratch(rows ? "ledger_rows" : "ledger");
+        const std::string kase =
+            rows ? test::generateCase(dir, "plate",
+                                      test::replaceOnce(readFile(caseDef(kPlateDef)), "<parameters>",
+                                                        "<parameters><parameter key=\"VcpmRowBending\" value=\"1\" />"),
+                                      0.025)
+                 : test::generateCaseFile(dir, "plate", caseDef(kPlateDef), 0.025);
+        const solver::SolverCase c = solver::loadSolverCase(kase);
+        const solver::SolidSetup so = solver::makeSolidSetup(c);
+        ASSERT_EQ(so.materials.size(), 1u);
+        ASSERT_EQ(so.materials[0].damp_rate, 0.0);
+        ASSERT_LE(so.materials[0].crit_stretch, 0.0);
+        ASSERT_EQ(so.row_slot.empty(), rows == 0);
+        const double gz = c.constants.gravity.z;
+        for (int coupling : {2, 1}) {
+            if (rows && coupling == 1) continue;
+            const std::string out = dir + "/out" + std::to_string(coupling);
+            std::vector<double> ts, work, energy, solid_work;
+            double e0 = 0, max_dj = 0, max_dw = 0, jscale = 0, wscale = 0, t_prev = 0, w_prev = 0;
+            physics::Double3 j_prev{0, 0, 0};
+            std::vector<physics::Double3> r_prev(so.pos);
+            std::size_t broken = 0;
+            // An output after every fluid step (TimeOut below the step).
+            const auto r = test::runCpu(
+                kase, out, 2,
+                [&](solver::RunOptions& o) {
+                    o.tmax = 0.02;
+                    o.tout = 1e-6;
+                    o.vcpm_coupling = coupling;
+                },
+                [&](double t, long long, const solver::HostState& st) {
+                    double kin = 0, pot = 0, w = 0;
+                    physics::Double3 j{0, 0, 0}, jstep{0, 0, 0};
+                    double wstep = 0;
+                    for (std::uint32_t s = 0; s < so.nsolid; ++s) {
+                        const physics::Double3 v = st.solid_vel[s], p = st.pos[so.first_solid + s], f = st.solid_force[s];
+                        kin += 0.5 * so.mass[s] * (v.x * v.x + v.y * v.y + v.z * v.z);
+                        pot -= so.mass[s] * gz * (p.z - so.pos[s].z);
+                        w += st.solid_work[s];
+                        j = {j.x + st.solid_impulse[s].x, j.y + st.solid_impulse[s].y, j.z + st.solid_impulse[s].z};
+                        jstep = {jstep.x + f.x, jstep.y + f.y, jstep.z + f.z};
+                        wstep += f.x * (p.x - r_prev[s].x) + f.y * (p.y - r_prev[s].y) + f.z * (p.z - r_prev[s].z);
+                        r_prev[s] = p;
+                    }
+                    const double e = kin + latticeEnergy(so, st) + pot;
+                    if (ts.empty()) e0 = e;
+                    if (!ts.empty()) {  // the step from the previous output to this one
+                        const double dt = t - t_prev;
+                        max_dj = std::max({max_dj, std::fabs(j.x - j_prev.x - jstep.x * dt),
+                                           std::fabs(j.z - j_prev.z - jstep.z * dt)});
+                        max_dw = std::max(max_dw, std::fabs(w - w_prev - wstep));
+                    }
+                    jscale = std::max(jscale, std::fabs(j.z));
+                    wscale = std::max(wscale, std::fabs(w));
+                    ts.push_back(t);
+                    work.push_back(w);
+                    energy.push_back(e - e0);
+                    t_prev = t;
+                    w_prev = w;
+                    j_prev = j;
+                    broken = std::max(broken, test::brokenSlots(st));
+                });
+            ASSERT_EQ(ts.size(), std::size_t(r.summary.steps + 1));
+            EXPECT_EQ(broken, 0u);
+            double max_de = 0;
+            for (std::size_t k = 0; k < ts.size(); ++k) max_de = std::max(max_de, std::fabs(work[k] - energy[k]));
+            std::printf("ledger, VcpmRowBending %d, VcpmCoupling %d, %lld steps to %.4f s: work %.6f J, energy change %.6f J; largest "
+                        "|work - energy change| %.3e J = %.2e of the largest work %.4f J; per-step bookkeeping: "
+                        "|dJ - F dt| <= %.2e N s (impulse %.2f N s), |dW - F.dr| <= %.2e J\n",
+                        rows, coupling, r.summary.steps, ts.back(), work.back(), energy.back(), max_de, max_de / wscale, wscale,
+                        max_dj, jscale, max_dw);
+            // Measured 1.5e-6 (VcpmCoupling 2) and 1.6e-6 (1) of the largest work over 0.02 s; at the
+            // end 0.526174 J against 0.526175 J (dp 0.0125: 0.412166 J against 0.412166 J, 7e-7).
+            EXPECT_GT(wscale, 0.1);
+            EXPECT_LT(max_de, 2e-5 * wscale) << coupling;
+            EXPECT_LT(max_dj, 1e-12 * jscale) << coupling;
+            EXPECT_LT(max_dw, 1e-12 * wscale) << coupling;
+            // The ledger file: one row per output, its columns as recomputed here (printed to 9 digits).
+            const std::string csv = readFile(out + "/ledger.csv");
+            const std::vector<double> lw = csvColumn(csv, "work"), lt = csvColumn(csv, "time");
+            const std::vector<double> lk = csvColumn(csv, "solid_kinetic"), lu = csvColumn(csv, "solid_elastic");
+            const std::vector<double> lp = csvColumn(csv, "solid_potential");
+            ASSERT_EQ(lw.size(), ts.size());
+            ASSERT_EQ(lk.size(), ts.size());
+            for (std::size_t k = 0; k < ts.size(); ++k) {
+                EXPECT_NEAR(lt[k], ts[k], 1e-8 * ts.back());
+                EXPECT_NEAR(lw[k], work[k], 1e-8 * wscale) << k;
+                EXPECT_NEAR(lk[k] + lu[k] + lp[k], energy[k] + e0, 1e-8 * wscale) << k;
+            }
         }
     }
 }

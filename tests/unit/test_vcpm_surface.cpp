@@ -159,3 +159,55 @@ TEST(VcpmSurface, WeightedForceIsMinusEnergyGradient) {
             EXPECT_LT(rel, 1e-6);
         }
 }
+
+// The rows' own bending (physics/vcpm_rows.h, VcpmRowBending): the force of vcpm.h's passes is
+// minus the gradient of the independent energy (vcpm_block.h, which finds the triplets from
+// the lattice sites), with and without the volumetric weights, after a bond broke (its two
+// triplets drop on both sides), and the curvatures vanish under a uniform strain plus a
+// rotation (the term leaves the patch test alone).
+TEST(VcpmSurface, RowBendingForceIsMinusEnergyGradient) {
+    for (bool two_d : {true, false})
+        for (bool weights : {false, true}) {
+            const double dp = 0.01, E = 1e6, nu = 0.3;
+            Block b(two_d, 5, 4, 5, dp, vcpmMaterial(two_d ? 2 : 3, E, nu, 1000.0, dp, 0, 0));
+            if (weights) setWeights(b);
+            b.setRows(rowBendingStiffness(two_d ? 2 : 3, latticeUniaxialModulus(two_d ? 2 : 3, E, nu), dp));
+            std::mt19937_64 rng(11);
+            std::uniform_real_distribution<double> u(-1.0, 1.0);
+            Mat3 eps{};
+            for (int i = 0; i < 3; ++i)
+                for (int l = 0; l < 3; ++l) eps[i][l] = (two_d && (i == 1 || l == 1)) ? 0.0 : 0.01 * u(rng);
+            std::vector<Double3> x = affine(b, eps, 1.0);
+            perturb(x, 0.02 * dp, two_d, rng);
+            const double rel = forceEnergyMismatch(b, x);
+            // A broken first-neighbour bond in the middle (both slots, as both ends decide alike).
+            const std::uint32_t s0 = b.at(2, two_d ? 0 : 1, 2);
+            for (int q = 0; q < b.count[s0]; ++q) {
+                const std::uint32_t k = b.slot(s0, q);
+                if (b.partner[k] == b.at(3, two_d ? 0 : 1, 2)) b.broken[k] = b.broken[b.mirror[k]] = 1;
+            }
+            const double rel_broken = forceEnergyMismatch(b, x);
+            std::printf("[ rows' bending ] %s, weights %d: max |F + dU/dx| / max|F| = %.2e, with a broken bond %.2e\n",
+                        two_d ? "2D" : "3D", int(weights), rel, rel_broken);
+            EXPECT_LT(rel, 1e-6);
+            EXPECT_LT(rel_broken, 1e-6);
+        }
+}
+
+TEST(VcpmSurface, RowCurvatureVanishesUnderUniformStrainAndRotation) {
+    for (bool two_d : {true, false}) {
+        const double dp = 0.01;
+        Block b(two_d, 5, 4, 5, dp, vcpmMaterial(two_d ? 2 : 3, 1e6, 0.3, 1000.0, dp, 0, 0));
+        b.setRows(1e5);
+        const double c = std::cos(0.7), s = std::sin(0.7);
+        Mat3 e = two_d ? Mat3{{{1.03 * c, 0, 0.02 - s}, {0, 1, 0}, {s, 0, 0.98 * c}}}
+                       : Mat3{{{1.03 * c, -s, 0.01}, {s, 0.99 * c, 0.02}, {0.015, 0, 0.98}}};
+        std::vector<Double3> x = affine(b, e, 1.0, 0.0);
+        forces(b, x);
+        double dmax = 0;
+        for (const Double3& d : b.row_d) dmax = std::max(dmax, seaspring::test::norm(d));
+        std::printf("[ rows' bending ] %s: largest |d| under a uniform strain and rotation %.2e dp\n", two_d ? "2D" : "3D",
+                    dmax / dp);
+        EXPECT_LT(dmax, 1e-12 * dp);
+    }
+}

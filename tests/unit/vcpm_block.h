@@ -42,6 +42,10 @@ struct Block {
     std::vector<double> rest, sum;
     std::vector<double> vw, vw_partner;  // volumetric weights (empty: none; physics/vcpm_surface.h)
     std::vector<std::uint16_t> body;
+    /// The rows' bending (empty: none; physics/vcpm_rows.h): slots per axis and side, curvatures.
+    std::vector<std::uint8_t> row_slot;
+    std::vector<Double3> row_d;
+    int row_axes = 0;
 
     Block(bool td, int nx_, int ny_, int nz_, double dp_, const VcpmMaterial& m)
         : two_d(td), nx(nx_), ny(td ? 1 : ny_), nz(nz_), dp(dp_), mat(m), n(std::uint32_t(nx * ny * nz)) {
@@ -85,11 +89,35 @@ struct Block {
         auto ok = [](int i, int m) { return i >= 2 && i < m - 2; };
         return ok(site[s].x, nx) && ok(site[s].z, nz) && (two_d || ok(site[s].y, ny));
     }
+    /// Switches the rows' bending on with stiffness k_r: each particle's first-neighbour slots
+    /// along each axis, from the lattice sites (independent of the solver's set-up).
+    void setRows(double k_r) {
+        mat.row_k = k_r;
+        row_axes = two_d ? 2 : 3;
+        row_slot.assign(std::size_t(2 * row_axes) * n, physics::kNoRowSlot);
+        row_d.assign(std::size_t(row_axes) * n, Double3{0, 0, 0});
+        for (std::uint32_t s = 0; s < n; ++s)
+            for (int q = 0; q < count[s]; ++q) {
+                const std::uint32_t j = partner[slot(s, q)];
+                const int d[3] = {site[j].x - site[s].x, site[j].y - site[s].y, site[j].z - site[s].z};
+                if (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]) != 1) continue;
+                for (int c = 0; c < 3; ++c)
+                    if (d[c] != 0) {
+                        const int a = two_d ? (c == 2 ? 1 : 0) : c;
+                        row_slot[std::size_t(2 * a + (d[c] > 0 ? 1 : 0)) * n + s] = std::uint8_t(q);
+                    }
+            }
+    }
     SolidBonds bonds() {
         SolidBonds b{n, count.data(), partner.data(), rest.data(), flags.data(), broken.data()};
         if (!vw.empty()) {
             b.vw = vw.data();
             b.vw_partner = vw_partner.data();
+        }
+        if (row_axes > 0) {
+            b.row_slot = row_slot.data();
+            b.row_d = row_d.data();
+            b.row_axes = row_axes;
         }
         return b;
     }
@@ -145,6 +173,23 @@ inline double energy(const Block& b, const std::vector<Double3>& x) {
         }
         u += b.mat.t_half * S * S;  // 1/2 T S^2 with T = 2 t_half
     }
+    // The rows' bending: 1/2 k_r |x+ - 2 x + x-|^2 per site with intact first-neighbour bonds
+    // on both sides along an axis (found from the sites, not from the row slots).
+    for (std::uint32_t s = 0; b.row_axes > 0 && s < b.n; ++s)
+        for (int c = 0; c < 3; ++c) {
+            if (b.two_d && c == 1) continue;
+            int nb[2] = {-1, -1};
+            for (int q = 0; q < b.count[s]; ++q) {
+                const std::uint32_t k = b.slot(s, q), j = b.partner[k];
+                const int d[3] = {b.site[j].x - b.site[s].x, b.site[j].y - b.site[s].y, b.site[j].z - b.site[s].z};
+                if (b.broken[k] || std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]) != 1 || d[c] == 0) continue;
+                nb[d[c] > 0 ? 1 : 0] = int(j);
+            }
+            if (nb[0] < 0 || nb[1] < 0) continue;
+            const Double3 m = x[std::uint32_t(nb[0])], p = x[std::uint32_t(nb[1])], o = x[s];
+            const double dx = m.x + p.x - 2 * o.x, dy = m.y + p.y - 2 * o.y, dz = m.z + p.z - 2 * o.z;
+            u += 0.5 * b.mat.row_k * (dx * dx + dy * dy + dz * dz);
+        }
     return u;
 }
 
