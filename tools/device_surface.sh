@@ -13,13 +13,14 @@
 #  4. liao: DualSPHysics' FlexStruc Liao 2D case as shipped (shared/dualsphysics-cases), plate
 #     top's horizontal displacement (tools/solid_marker.py; series in $OUT/liao2d_top_sc*.csv).
 # Writes $OUT/surface.txt. Usage: tools/device_surface.sh [parity|cantilever|plate|beam|liao]...
-# SC_LIST (default "0 1"): the lattices compared: 0 plain, 1 corrected (VcpmRowBending 1, the
-# default), 1r0 corrected without the rows' bending (VcpmRowBending 0).
+# SC_LIST (default "0 1"): the lattices compared: 0 plain, 1 corrected (the default, without the
+# rows' bending), 1r1 corrected with the rows' bending (VcpmRowBending 1). PARITY_SC (default 1):
+# the lattice of the parity part.
 set -uo pipefail
 SC_LIST=${SC_LIST:-0 1}
 scparams() {  # the <parameter> lines of one SC_LIST entry
   case $1 in
-    1r0) echo '<parameter key="VcpmSurfaceCorrection" value="1" /><parameter key="VcpmRowBending" value="0" />' ;;
+    1r1) echo '<parameter key="VcpmSurfaceCorrection" value="1" /><parameter key="VcpmRowBending" value="1" />' ;;
     *) echo "<parameter key=\"VcpmSurfaceCorrection\" value=\"$1\" />" ;;
   esac
 }
@@ -32,11 +33,11 @@ source "$(dirname "${BASH_SOURCE[0]}")/device_env.sh"
 if want parity; then
   echo "== parity with the surface correction (CPU 1, 2, 16 threads, GPU)" | tee -a "$table"
   sed -e '/<pointload/d' -e 's|<gravity x="0" y="0" z="0"|<gravity x="0" y="0" z="-1"|' \
-    -e 's|<parameters>|<parameters><parameter key="VcpmSurfaceCorrection" value="1" />|' \
+    -e "s|<parameters>|<parameters>$(scparams "${PARITY_SC:-1}")|" \
     "$root/cases/cantilever3d_tipload/CantileverTipLoad3D_Def.xml" >"$work/ClPar_Def.xml"
   "$bin/gencase" "$work/ClPar_Def.xml" "$work/clpar" -dp:0.0025 >/dev/null
   parity cantilever3d_surface "$work/clpar" 3000
-  sed 's|<parameters>|<parameters><parameter key="VcpmSurfaceCorrection" value="1" />|' \
+  sed "s|<parameters>|<parameters>$(scparams "${PARITY_SC:-1}")|" \
     "$root/cases/hydrostatic_plate/HydrostaticPlate_Def.xml" >"$work/PlatePar_Def.xml"
   "$bin/gencase" "$work/PlatePar_Def.xml" "$work/platepar" -dp:0.025 >/dev/null
   parity plate2d_surface "$work/platepar" 400
