@@ -173,6 +173,8 @@ SolverParameters readParameters(const ParameterTable& t) {
     p.vcpm_contact_friction = t.atLeast("VcpmContactFriction", 0, true);
     p.vcpm_surface_correction = t.choice("VcpmSurfaceCorrection", {0, 1}, "0 none (the plain lattice), 1 surface correction (springs, volumetric weights, clamp bonds)");
     p.vcpm_row_bending = t.choice("VcpmRowBending", {0, 1}, "0 none, 1 the rows' own bending (with VcpmSurfaceCorrection 1)");
+    if (p.vcpm_row_bending == 1 && p.vcpm_surface_correction == 0)
+        t.fail("VcpmRowBending", "needs VcpmSurfaceCorrection 1 (the rows' bending is part of the surface correction)");
     p.vcpm_substep_bound = t.choice("VcpmSubStepBound", {0, 1}, "0 Gershgorin's bounds, 1 the bodies' largest stiffness eigenvalues");
     p.time_out = t.atLeast("TimeOut", 0, false);
     if (t.number("TimeOutExtra") > 0)

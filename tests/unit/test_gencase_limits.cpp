@@ -116,6 +116,10 @@ TEST(GencaseLimits, RejectsWhatTheSolverWouldReject) {
     EXPECT_HAS(errorWith("bound", "<parameter key=\"Visco\"",
                          "<parameter key=\"VcpmSubStepBound\" value=\"2\"/><parameter key=\"Visco\""),
                "key=\"VcpmSubStepBound\" value=\"2\": is not supported by seaspring (supported: 0 Gershgorin");
+    EXPECT_HAS(errorWith("rows", "<parameter key=\"Visco\"",
+                         "<parameter key=\"VcpmSurfaceCorrection\" value=\"0\"/><parameter key=\"VcpmRowBending\" "
+                         "value=\"1\"/><parameter key=\"Visco\""),
+               "key=\"VcpmRowBending\" value=\"1\": needs VcpmSurfaceCorrection 1");
     EXPECT_HAS(errorWith("cfl", "<cflnumber value=\"0.2\" />", "<cflnumber value=\"5\" />"),
                "<cflnumber> value=5: must lie in (0, 1]");
     // gravity -1e300 gave infinite constants and exit 0.
