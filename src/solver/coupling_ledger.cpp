@@ -72,12 +72,9 @@ LedgerRow ledgerRow(double time, const HostState& st, const SolidSetup& so, cons
         }
         r.elastic += springs + physics::siteVolumetricEnergy(mat.t_half, sum);
         // The rows' bending, 1/2 k_r |d|^2 per row triplet centred at s (physics/vcpm_rows.h).
-        for (int a = 0; a < (so.row_slot.empty() ? 0 : so.row_axes); ++a) {
-            const std::uint8_t qm = so.row_slot[std::size_t(2 * a) * so.nsolid + s];
-            const std::uint8_t qp = so.row_slot[std::size_t(2 * a + 1) * so.nsolid + s];
-            if (qm == physics::kNoRowSlot || qp == physics::kNoRowSlot) continue;
-            const std::size_t km = std::size_t(qm) * so.nsolid + s, kp = std::size_t(qp) * so.nsolid + s;
-            if (st.bond_broken[km] || st.bond_broken[kp]) continue;
+        for (int a = 0; a < so.row_axes; ++a) {
+            std::size_t km = 0, kp = 0;
+            if (!rowTripletSlots(so, s, a, km, kp) || st.bond_broken[km] || st.bond_broken[kp]) continue;
             auto partnerId = [&](std::size_t k) {
                 return (so.flags[k] & physics::kBondClamp) ? so.clamp_id[so.partner[k]] : so.first_solid + so.partner[k];
             };

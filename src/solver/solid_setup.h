@@ -80,6 +80,18 @@ void surfaceCorrection(SolidSetup& s, int substep_bound = 0);
 /// axis, from the rest vectors) and each body's k_r (physics/vcpm_rows.h).
 void rowBending(SolidSetup& s, double dp);
 
+/// The slot indices (slot-major) of the two bonds of solid particle r's row triplet along axis
+/// a, false when it has none (VcpmRowBending off, or a side without a first-neighbour bond).
+inline bool rowTripletSlots(const SolidSetup& s, std::uint32_t r, int a, std::size_t& km, std::size_t& kp) {
+    if (s.row_slot.empty()) return false;
+    const std::uint8_t qm = s.row_slot[std::size_t(2 * a) * s.nsolid + r];
+    const std::uint8_t qp = s.row_slot[std::size_t(2 * a + 1) * s.nsolid + r];
+    if (qm == physics::kNoRowSlot || qp == physics::kNoRowSlot) return false;
+    km = std::size_t(qm) * s.nsolid + r;
+    kp = std::size_t(qp) * s.nsolid + r;
+    return true;
+}
+
 /// Broken-bond count of every solid particle (host, from the slot states).
 std::vector<std::uint8_t> brokenPerParticle(const SolidSetup& s, const std::vector<std::uint8_t>& broken);
 

@@ -191,11 +191,10 @@ std::vector<double> gershgorinSubStepScales(const SolidSetup& s) {
     }
     // The rows' bending k_r c c^T per row triplet, c = (1, -2, 1) on (minus, centre, plus) in
     // every component (physics/vcpm_rows.h); rigid clamp nodes have no rows.
-    for (std::uint32_t r = 0; r < (s.row_slot.empty() ? 0u : n); ++r)
+    for (std::uint32_t r = 0; r < n; ++r)
         for (int a = 0; a < s.row_axes; ++a) {
-            const std::uint8_t qm = s.row_slot[std::size_t(2 * a) * n + r], qp = s.row_slot[std::size_t(2 * a + 1) * n + r];
-            if (qm == physics::kNoRowSlot || qp == physics::kNoRowSlot) continue;
-            const std::size_t km = std::size_t(qm) * n + r, kp = std::size_t(qp) * n + r;
+            std::size_t km = 0, kp = 0;
+            if (!rowTripletSlots(s, r, a, km, kp)) continue;
             const bool sm = !(s.flags[km] & physics::kBondClamp), sp = !(s.flags[kp] & physics::kBondClamp);
             const double k_r = s.materials[s.body[r]].row_k;
             const double c_norm = 2.0 + (sm ? 1.0 : 0.0) + (sp ? 1.0 : 0.0);
