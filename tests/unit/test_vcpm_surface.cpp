@@ -146,13 +146,7 @@ TEST(VcpmSurface, WeightedForceIsMinusEnergyGradient) {
             const double dp = 0.01;
             Block b(two_d, 4, 3, 4, dp, vcpmMaterial(two_d ? 2 : 3, 1e6, nu, 1000.0, dp, 0, 0));
             setWeights(b);
-            std::mt19937_64 rng(7);
-            std::uniform_real_distribution<double> u(-1.0, 1.0);
-            Mat3 eps{};
-            for (int i = 0; i < 3; ++i)
-                for (int l = 0; l < 3; ++l) eps[i][l] = (two_d && (i == 1 || l == 1)) ? 0.0 : 0.01 * u(rng);
-            std::vector<Double3> x = affine(b, eps, 1.0);
-            perturb(x, 0.01 * dp, two_d, rng);
+            const std::vector<Double3> x = seaspring::test::randomlyDeformed(b, 0.01, 0.01 * dp, 7);
             const double rel = forceEnergyMismatch(b, x);
             std::printf("[ weighted energy ] %s nu=%.2f  max |F + dU/dx| / max|F| = %.2e\n", two_d ? "2D" : "3D", nu,
                         rel);
@@ -172,13 +166,7 @@ TEST(VcpmSurface, RowBendingForceIsMinusEnergyGradient) {
             Block b(two_d, 5, 4, 5, dp, vcpmMaterial(two_d ? 2 : 3, E, nu, 1000.0, dp, 0, 0));
             if (weights) setWeights(b);
             b.setRows(rowBendingStiffness(two_d ? 2 : 3, latticeUniaxialModulus(two_d ? 2 : 3, E, nu), dp));
-            std::mt19937_64 rng(11);
-            std::uniform_real_distribution<double> u(-1.0, 1.0);
-            Mat3 eps{};
-            for (int i = 0; i < 3; ++i)
-                for (int l = 0; l < 3; ++l) eps[i][l] = (two_d && (i == 1 || l == 1)) ? 0.0 : 0.01 * u(rng);
-            std::vector<Double3> x = affine(b, eps, 1.0);
-            perturb(x, 0.02 * dp, two_d, rng);
+            const std::vector<Double3> x = seaspring::test::randomlyDeformed(b, 0.01, 0.02 * dp, 11);
             const double rel = forceEnergyMismatch(b, x);
             // A broken first-neighbour bond in the middle (both slots, as both ends decide alike).
             const std::uint32_t s0 = b.at(2, two_d ? 0 : 1, 2);

@@ -205,6 +205,19 @@ inline std::vector<Double3> affine(const Block& b, const Mat3& e, double scale, 
     return x;
 }
 
+/// The block under a random uniform strain (components in [-strain, strain], in-plane in 2D)
+/// plus a random displacement in [-amp, amp] of each particle, from a fixed seed.
+inline std::vector<Double3> randomlyDeformed(const Block& b, double strain, double amp, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Mat3 eps{};
+    for (int i = 0; i < 3; ++i)
+        for (int l = 0; l < 3; ++l) eps[i][l] = (b.two_d && (i == 1 || l == 1)) ? 0.0 : strain * u(rng);
+    std::vector<Double3> x = affine(b, eps, 1.0);
+    perturb(x, amp, b.two_d, rng);
+    return x;
+}
+
 /// max |F + dU/dx| / max |F| at positions x, F from the passes of vcpm.h (forces), dU/dx by
 /// central differences of the independent energy (step 1e-5 dp).
 inline double forceEnergyMismatch(Block& b, const std::vector<Double3>& x) {
