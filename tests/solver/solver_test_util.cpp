@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -21,7 +22,12 @@ namespace seaspring::test {
 namespace fs = std::filesystem;
 
 std::string scratch(const std::string& tag) {
-    return ::testing::TempDir() + "seaspring_" + tag + "_" + std::to_string(::getpid());
+    // The pid alone repeats across runs (old directories stay in TempDir(), and a program run
+    // into one that holds an earlier run's output exits with 2): the process's start time, taken
+    // once, makes the name unique per run and the same for every call in this process.
+    static const std::string run = std::to_string(::getpid()) + "_" +
+                                   std::to_string(std::chrono::system_clock::now().time_since_epoch().count());
+    return ::testing::TempDir() + "seaspring_" + tag + "_" + run;
 }
 
 std::string caseDef(const std::string& rel) { return std::string(SEASPRING_SOURCE_DIR) + "/cases/" + rel; }

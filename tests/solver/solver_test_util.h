@@ -12,7 +12,8 @@
 
 namespace seaspring::test {
 
-/// A scratch directory for one test: TempDir()/seaspring_TAG_PID.
+/// A scratch directory for one test: TempDir()/seaspring_TAG_PID_STARTTIME (the same for every
+/// call of this process, new for every run).
 std::string scratch(const std::string& tag);
 /// SEASPRING_SOURCE_DIR/cases/REL (a case definition shipped with the sources).
 std::string caseDef(const std::string& rel);
