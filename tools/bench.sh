@@ -55,6 +55,8 @@
 #                   base figure, new/base and whether the state hashes match
 #      BASE_ENV     environment assignments for the baseline runs only, e.g. BASE_BIN=build-dev/bin
 #                   BASE_ENV=SEASPRING_FORCES_AHEAD=0: one binary with and without a run-time switch
+#      BASE_ARGS    extra solver options for the baseline runs only, e.g. BASE_BIN=build-dev/bin
+#                   BASE_ARGS=-pairlanes:1: one binary with and without an option
 #      ROUNDS       rounds of each run (default 1); the table shows medians
 #      OUT          where bench.csv (the table) and bench.log (everything printed) go
 #                   (default /tmp/seaspring_bench)
@@ -212,9 +214,10 @@ run_one() {  # bench kind build round case membench solver-args...
     return
   fi
   rm -rf "$out"
-  local envs=()
+  local envs=() base_args=()
   [[ $build == base && -n "${BASE_ENV:-}" ]] && read -r -a envs <<<"env $BASE_ENV"
-  local cmd=("${envs[@]}" "${prefix[@]}" "$b/seaspring" "$@" "${extra[@]}" -sv:none -progress:0 "$work/cases/$case" "$out")
+  [[ $build == base && -n "${BASE_ARGS:-}" ]] && read -r -a base_args <<<"$BASE_ARGS"
+  local cmd=("${envs[@]}" "${prefix[@]}" "$b/seaspring" "$@" "${extra[@]}" "${base_args[@]}" -sv:none -progress:0 "$work/cases/$case" "$out")
   echo "[$(stamp)] $bench $build round $round: ${cmd[*]}"
   [[ -n "$membench" ]] && mem_start "$out.mem"
   timeout -k 5 "$left" "${cmd[@]}" >"$log" 2>&1
@@ -306,7 +309,7 @@ main() {
   trap mem_stop EXIT
   echo "== SeaSpring speed benchmark (issue 16): parts ${want[*]}"
   echo "   $(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?'), host $(hostname 2>/dev/null || uname -n)"
-  echo "   new: $new_bin${base_bin:+; base: $base_bin}${BASE_ENV:+ with $BASE_ENV}; rounds $rounds; backend ${backend[*]}; extra options: ${extra[*]:-none}"
+  echo "   new: $new_bin${base_bin:+; base: $base_bin}${BASE_ENV:+ with $BASE_ENV}${BASE_ARGS:+ and $BASE_ARGS}; rounds $rounds; backend ${backend[*]}; extra options: ${extra[*]:-none}"
   echo "   work $work, results $outdir; deadline $deadline s"
   command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=index,name,driver_version,memory.total,memory.used --format=csv,noheader | sed 's/^/   GPU /'
   local spheric="" s100k="" gen_ok

@@ -20,7 +20,8 @@ class HostExec {
 public:
     template <typename T>
     using Buffer = std::vector<T>;
-    /// The pair loops take the host's batched form (physics::PairBatch): same bits, SIMD lanes.
+    /// The pair loops take the host's batched form (physics::PairBatch): same bits, SIMD lanes;
+    /// one call forms all pair lanes of a fluid particle (solver::FluidForcesPass).
     static constexpr bool kCompactPairs = true;
 
     /// `threads` <= 0: OpenMP's default. Every parallel region names its thread count, so

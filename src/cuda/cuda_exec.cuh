@@ -175,7 +175,8 @@ class CudaExec {
 public:
     template <typename T>
     using Buffer = DeviceBuffer<T>;
-    /// One thread per particle walks its candidates directly (physics::fluidPairsInRow).
+    /// One thread per pair lane of a fluid particle walks its candidates directly
+    /// (physics::fluidPairsInRow; solver::FluidLanesPass).
     static constexpr bool kCompactPairs = false;
 
     explicit CudaExec(int device);

@@ -4,12 +4,21 @@
 ///        pair terms of fluid_pair_terms.h.
 ///
 /// Both backends call these functions per particle over the same cell-sorted arrays (the CPU
-/// from an OpenMP loop, the GPU one thread per particle), so neighbours are visited in the
-/// same order and sums are formed in the same order: results are bit-identical.
+/// from an OpenMP loop, the GPU one thread per lane of a particle), so neighbours are visited
+/// in the same order and sums are formed in the same order: results are bit-identical.
 /// Neighbour order: all fluid-block rows, then all boundary-block rows, each block in the
 /// order of forEachCandidateRow (neighbour_rows.h): rows by z then y (ascending); inside a row,
 /// the contiguous particle range of its cells (sorted by cell, then id). Gather only: each
 /// particle writes its own results.
+///
+/// Pair lanes (`lanes`, a power of two <= kMaxPairLanes; -pairlanes): a particle's sums are
+/// split into `lanes` partial sums. Candidate number p of a block (counted from 0 in the row
+/// order above, neighbours or not) goes to partial p mod lanes, each partial summed in
+/// candidate order; the partials are then combined pairwise, (s0 + s1) + (s2 + s3) and so on
+/// (combineLanes). The GPU runs one thread per lane (fluidLanePartial) and combines with the
+/// same tree across the lanes of a warp; the host forms all partials in one walk
+/// (fluidLanePartials). One lane is the plain sum. More lanes give small cases more threads:
+/// the summation order changes with `lanes`, so hashes compare runs of the same lanes.
 #pragma once
 
 #include <cstdint>
@@ -22,12 +31,15 @@ namespace seaspring::physics {
 
 /// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound), `par`
 /// and `cax` as forEachCandidateRow gives them: the direct loop (the GPU's path).
+/// Pair lanes: `lane` takes the candidates j of the row whose number in the block, `seen` + (j -
+/// pb), is lane mod `lanes` (lanes a power of two; one lane: every candidate).
 template <class Opt, bool kBound>
-SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax,
+SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen, std::uint32_t lane,
+                                         std::uint32_t lanes, const Float4& par, int cax,
                                          const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                                          const InteractionInputs& in, const FluidConstants& c,
                                          const CellGrid& g, FluidAccum& acc) {
-    for (std::uint32_t j = pb; j < pe; ++j) {
+    for (std::uint32_t j = pb + ((lane - seen) & (lanes - 1u)); j < pe; j += lanes) {
         float drx, dry, drz;
         const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
         if (!isNeighbour(rr2, c)) continue;
@@ -39,20 +51,24 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, con
 /// in batches. Offsets are computed in SIMD lanes, neighbours selected without branches, their
 /// terms computed in SIMD lanes, and the terms summed one by one in candidate order: the same
 /// operations in the same order as the direct loop, so the same bits, at a fraction of the
-/// cost of a mispredicted branch per candidate and scalar pair arithmetic.
+/// cost of a mispredicted branch per candidate and scalar pair arithmetic. Pair lanes: each
+/// candidate carries its lane (its number in the block mod lanes), and its terms go to that
+/// lane's partial sum, acc[lane].
 template <class Opt, bool kBound>
 struct PairBatch {
     static constexpr int kCap = 256;
     std::uint32_t jj[kCap];
+    std::uint8_t ln[kCap];
     float bx[kCap], by[kCap], bz[kCap], br[kCap];
     PairTerms t[kCap];
     int m = 0;
 
     SEASPRING_HD void flush(const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
-                            const InteractionInputs& in, const FluidConstants& c, FluidAccum& acc) {
+                            const InteractionInputs& in, const FluidConstants& c, FluidAccum* acc) {
         int n = 0;
         for (int k = 0; k < m; ++k) {  // in place: n <= k
             jj[n] = jj[k];
+            ln[n] = ln[k];
             bx[n] = bx[k];
             by[n] = by[k];
             bz[n] = bz[k];
@@ -64,62 +80,141 @@ struct PairBatch {
         const float *__restrict sx = bx, *__restrict sy = by, *__restrict sz = bz, *__restrict sr = br;
         for (int q = 0; q < n; ++q)  // SIMD lanes
             t[q] = fluidPairTerms<Opt, kBound>(sj[q], sx[q], sy[q], sz[q], sr[q], va, ovrhoa, pressa, taua, in, c);
-        for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc, t[q]);
+        for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc[ln[q]], t[q]);
         m = 0;
     }
 
-    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax, const Float4& va,
-                             float ovrhoa, float pressa, const SymTensor& taua, const InteractionInputs& in,
-                             const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
+    /// Candidates [pb, pe), the first of them number `seen` of the block.
+    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen, std::uint32_t lanes,
+                             const Float4& par, int cax, const Float4& va, float ovrhoa, float pressa,
+                             const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
+                             const CellGrid& g, FluidAccum* acc) {
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
             for (int k = 0; k < take; ++k) {
                 const std::uint32_t j = pb + std::uint32_t(k);
                 jj[m + k] = j;
+                ln[m + k] = std::uint8_t((seen + std::uint32_t(k)) & (lanes - 1u));
                 br[m + k] = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, bx[m + k], by[m + k], bz[m + k]);
             }
             m += take;
             pb += std::uint32_t(take);
+            seen += std::uint32_t(take);
             if (m == kCap) flush(va, ovrhoa, pressa, taua, in, c, acc);
         }
     }
 };
 
 /// The pairs of `psa` with the candidates of one block (`cell_start` of that block), row by row
-/// (forEachCandidateRow).
+/// (forEachCandidateRow), candidates numbered from 0 in the block: kCompact (the host), every
+/// lane's partial at once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0].
 template <class Opt, bool kBound, bool kCompact>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
-                                           const FluidConstants& c, const CellGrid& g, FluidAccum& acc) {
+                                           const FluidConstants& c, const CellGrid& g, std::uint32_t lane,
+                                           std::uint32_t lanes, FluidAccum* acc) {
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
+    std::uint32_t seen = 0;
     forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (kCompact)
-            batch.addRow(pb, pe, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+            batch.addRow(pb, pe, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
         else
-            fluidPairsInRow<Opt, kBound>(pb, pe, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+            fluidPairsInRow<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
+        seen += pe - pb;
     });
     if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
 }
 
-/// Force evaluation of fluid particle `i`: fluid neighbours, then boundary neighbours.
-/// kCompact: see PairBatch (the host sets it; same results).
-template <class Opt, bool kCompact = false>
-SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const InteractionInputs& in,
-                                                   const FluidConstants& c, const CellGrid& g) {
+/// The partial sums of fluid particle `i` (fluid neighbours, then boundary neighbours): kCompact,
+/// all `lanes` partials into acc[0, lanes) in one walk (the host's path); otherwise lane `lane`'s
+/// alone into acc[0] (the GPU's path: one thread per lane). acc[] starts as FluidAccum{}.
+template <class Opt, bool kCompact>
+SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, std::uint32_t lanes,
+                                           const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
+                                           FluidAccum* acc) {
     const Float4 psa = in.poscell[i];
     const Float4 va = in.velrho[i];
     const Float2 pa2 = in.press_ovrho[i];
     const float pressa = pa2.x, ovrhoa = pa2.y;
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
-    FluidAccum acc;
-    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
+    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane, lanes,
+                                            acc);
     if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
-        fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, acc);
-    if (Opt::ddt != DensityDiffusion::None && !acc.ddt_off) acc.ar += acc.delta;
+        fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                               lanes, acc);
+}
+
+/// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane).
+template <class Opt>
+SEASPRING_HD inline FluidAccum fluidLanePartial(std::uint32_t i, std::uint32_t lane, std::uint32_t lanes,
+                                                const InteractionInputs& in, const FluidConstants& c,
+                                                const CellGrid& g) {
+    FluidAccum acc;
+    fluidLanePartials<Opt, false>(i, lane, lanes, in, c, g, &acc);
     return acc;
+}
+
+/// Two partial sums combined (a, the lower lane, first): sums added, maxima and flags merged.
+template <class Opt>
+SEASPRING_HD inline FluidAccum combineLanePair(const FluidAccum& a, const FluidAccum& b) {
+    FluidAccum r;
+    r.ax = a.ax + b.ax;
+    r.ay = a.ay + b.ay;
+    r.az = a.az + b.az;
+    r.ar = a.ar + b.ar;
+    r.delta = a.delta + b.delta;
+    r.visc = maxf(a.visc, b.visc);
+    r.ddt_off = a.ddt_off || b.ddt_off;
+    if (Opt::sps) {
+        r.gradvel.xx = a.gradvel.xx + b.gradvel.xx; r.gradvel.xy = a.gradvel.xy + b.gradvel.xy;
+        r.gradvel.xz = a.gradvel.xz + b.gradvel.xz; r.gradvel.yy = a.gradvel.yy + b.gradvel.yy;
+        r.gradvel.yz = a.gradvel.yz + b.gradvel.yz; r.gradvel.zz = a.gradvel.zz + b.gradvel.zz;
+    }
+    return r;
+}
+
+/// combineLanePair as a function object (for combineAcrossLanes, core/lane_group.h).
+template <class Opt>
+struct CombineLanePair {
+    SEASPRING_HD FluidAccum operator()(const FluidAccum& a, const FluidAccum& b) const {
+        return combineLanePair<Opt>(a, b);
+    }
+};
+
+/// The partials acc[0, lanes) combined pairwise into acc[0]: at width w = 1, 2, 4, ..., acc[k] =
+/// combineLanePair(acc[k], acc[k + w]) for k a multiple of 2w; (s0 + s1) + (s2 + s3) for four.
+/// A warp's butterfly (lane k takes lane k ^ w's value at width w) gives lane 0 the same.
+template <class Opt>
+SEASPRING_HD inline void combineLanes(FluidAccum* acc, std::uint32_t lanes) {
+    for (std::uint32_t w = 1; w < lanes; w <<= 1)
+        for (std::uint32_t k = 0; k < lanes; k += 2 * w) acc[k] = combineLanePair<Opt>(acc[k], acc[k + w]);
+}
+
+/// A fluid particle's sums complete: the density diffusion joins the continuity term (unless a
+/// boundary neighbour switched it off).
+template <class Opt>
+SEASPRING_HD inline void finishFluidAccum(FluidAccum& acc) {
+    if (Opt::ddt != DensityDiffusion::None && !acc.ddt_off) acc.ar += acc.delta;
+}
+
+/// Force evaluation of fluid particle `i` over `lanes` pair lanes: fluid neighbours, then
+/// boundary neighbours. kCompact: see PairBatch (the host sets it; same results).
+template <class Opt, bool kCompact = false>
+SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const InteractionInputs& in,
+                                                   const FluidConstants& c, const CellGrid& g,
+                                                   std::uint32_t lanes = 1) {
+    FluidAccum acc[kMaxPairLanes];
+    if constexpr (kCompact) {
+        fluidLanePartials<Opt, true>(i, 0, lanes, in, c, g, acc);
+    } else {
+        for (std::uint32_t l = 0; l < lanes; ++l) acc[l] = fluidLanePartial<Opt>(i, l, lanes, in, c, g);
+    }
+    combineLanes<Opt>(acc, lanes);
+    finishFluidAccum<Opt>(acc[0]);
+    return acc[0];
 }
 
 /// Candidates the host filters at once in boundParticleForces (kCompact).

@@ -18,6 +18,10 @@
 
 namespace seaspring::physics {
 
+/// The most pair lanes of the fluid loop (fluid_interaction.h; a power of two: the host keeps
+/// this many partial sums per particle).
+constexpr std::uint32_t kMaxPairLanes = 8;
+
 /// Safety margin of the row spans, in cells: absorbs the rounding of the span arithmetic. The
 /// grid's skin is added to it: a candidate may lie up to the skin outside its cell (cell_grid.h).
 constexpr float kRowSpanMargin = 1e-3f;

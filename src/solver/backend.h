@@ -57,6 +57,9 @@ struct BackendSetup {
     std::vector<std::uint16_t> moving_object;     ///< nmoving: index into the motions array
     std::uint32_t motion_objects = 0;
     SolidSetup solid;                             ///< VCPM solids (empty when none)
+    /// Pair lanes of the fluid loop (physics/fluid_interaction.h; resolvePairLanes): a power of
+    /// two <= physics::kMaxPairLanes.
+    std::uint32_t pair_lanes = 1;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
 };
 

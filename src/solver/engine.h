@@ -44,6 +44,10 @@ public:
     int threads() const override { return exec_.threads(); }
 
     void init(const BackendSetup& s) override {
+        if (s.pair_lanes == 0 || s.pair_lanes > physics::kMaxPairLanes || (s.pair_lanes & (s.pair_lanes - 1u)) != 0)
+            throw std::invalid_argument("Engine::init: " + std::to_string(s.pair_lanes) +
+                                        " pair lanes (a power of two up to " +
+                                        std::to_string(physics::kMaxPairLanes) + ")");
         dropForcesAhead();
         setup_ = s;
         sorted_ = false;
@@ -423,6 +427,8 @@ private:
         a.g = setup_.grid;
         a.nbound = nbound_;
         a.np = nbound_ + nfluid_;
+        a.lanes = setup_.pair_lanes;
+        while ((1u << a.lane_shift) < a.lanes) ++a.lane_shift;
         return a;
     }
 

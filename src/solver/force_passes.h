@@ -31,6 +31,8 @@ struct ForceArgs {
     const std::uint32_t* hydro_slot = nullptr;
     std::uint32_t nhydro = 0;
     physics::Double3* hydro_out = nullptr;
+    /// Pair lanes of the fluid loop (physics/fluid_interaction.h): a power of two, 2^lane_shift.
+    std::uint32_t lanes = 1, lane_shift = 0;
 };
 
 template <class Exec, class Kernel, int kDim>

@@ -5,6 +5,7 @@
 ///        compile-time option dispatch. Included only by the generated per-option units.
 #pragma once
 
+#include "core/lane_group.h"
 #include "physics/fluid_interaction.h"
 #include "physics/solid_coupling.h"
 #include "solver/force_passes.h"
@@ -13,15 +14,40 @@
 
 namespace seaspring::solver {
 
-/// Fluid particle i: all its pairs (kCompact: the host's batched form, same bits).
+/// Writes fluid particle i's completed sums.
+template <class Opt>
+SEASPRING_HD inline void writeFluidAccum(const physics::ParticleView& v, std::uint32_t i, const physics::FluidAccum& acc) {
+    v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
+    v.visc[i] = acc.visc;
+    if (Opt::sps) v.gradvel[i] = acc.gradvel;
+}
+
+/// Fluid particle i: all its pairs, every pair lane in one call (the host's path; kCompact:
+/// the batched form, same bits).
 template <class Opt, bool kCompact>
 struct FluidForcesPass {
     ForceArgs a;
     SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
-        const physics::FluidAccum acc = physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g);
-        a.v.acear[i] = physics::Float4{acc.ax, acc.ay, acc.az, acc.ar};
-        a.v.visc[i] = acc.visc;
-        if (Opt::sps) a.v.gradvel[i] = acc.gradvel;
+        writeFluidAccum<Opt>(a.v, i, physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g, a.lanes));
+    }
+};
+
+/// One pair lane of a fluid particle (the GPU's path): index k of [0, nfluid * lanes) is lane
+/// k mod lanes of fluid particle nbound + k / lanes. A particle's lanes are consecutive threads
+/// of one warp (the launch's indices start at 0, its blocks are whole warps and lanes divide
+/// 32), which combine their partial sums (combineAcrossLanes: the tree of
+/// physics::combineLanes); the first lane writes.
+template <class Opt>
+struct FluidLanesPass {
+    ForceArgs a;
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        const std::uint32_t lane = k & (a.lanes - 1u);
+        const std::uint32_t i = a.nbound + (k >> a.lane_shift);
+        physics::FluidAccum acc = physics::fluidLanePartial<Opt>(i, lane, a.lanes, a.in, a.c, a.g);
+        acc = combineAcrossLanes(acc, a.lanes, physics::CombineLanePair<Opt>{});
+        if (lane != 0u) return;
+        physics::finishFluidAccum<Opt>(acc);
+        writeFluidAccum<Opt>(a.v, i, acc);
     }
 };
 
@@ -124,19 +150,23 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     // (each writes its own particles' acear and visc; both read the pressure pass's results). On
     // the CPU the threads that finish their share of the (uneven) boundary loop go on to the fluid.
     using BoundOpt = FluidOptions<Kernel, Viscosity::Artificial, DensityDiffusion::None, kDim>;
+    // The fluid loop: the host takes a particle per call (all its pair lanes), the GPU a lane per
+    // thread over [0, nfluid * lanes).
+    const std::uint32_t fb = kCompact ? a.nbound : 0u;
+    const std::uint32_t fe = kCompact ? a.np : (a.np - a.nbound) << a.lane_shift;
     dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
         using Opt = decltype(opt);
-        const FluidForcesPass<Opt, kCompact> fluid{a};
+        using FluidPass = std::conditional_t<kCompact, FluidForcesPass<Opt, true>, FluidLanesPass<Opt>>;
+        const FluidPass fluid{a};
         const BoundForcesPass<BoundOpt, kCompact> bound{a};
         if (a.nhydro == 0) {
-            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, a.nbound, a.np,
-                                                                                 fluid);
+            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, fb, fe, fluid);
         } else {
             using HydroOpt = FluidOptions<Kernel, Opt::visco, DensityDiffusion::None, kDim>;
             const BoundThenHydroPass<BoundForcesPass<BoundOpt, kCompact>, HydroForcePass<HydroOpt>> both{
                 bound, HydroForcePass<HydroOpt>{a, a.hydro_slot, a.hydro_out}, a.nbound};
-            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound + a.nhydro, both,
-                                                                                 a.nbound, a.np, fluid);
+            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound + a.nhydro, both, fb,
+                                                                                 fe, fluid);
         }
     });
 }

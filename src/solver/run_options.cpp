@@ -15,6 +15,8 @@
 #include <set>
 #include <vector>
 
+#include "physics/neighbour_rows.h"
+
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
@@ -107,6 +109,7 @@ void declareOptions(CLI::App& app) {
     value("--partbegin")->excludes(restart);
     value("--cellmode");
     value("--skin");
+    value("--pairlanes");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
     value("--vcpmdtcoef");
@@ -251,6 +254,10 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (*o.skin > physics::kMaxSkinFraction)
                 usageError(g.arg + ": " + g.value + " is larger than 0.5" +
                            " (the skin is a fraction of the cell size)");
+        } else if (name == "pairlanes") {
+            o.pair_lanes = int(toInteger(g, 0, physics::kMaxPairLanes));
+            if ((o.pair_lanes & (o.pair_lanes - 1)) != 0)
+                usageError(g.arg + ": " + g.value + " is not a power of two (pair lanes: 1, 2, 4 or 8; 0: auto)");
         } else if (name == "vcpmsubsteps") {
             o.solid_substeps = int(toInteger(g, 0, 1000000));
         } else if (name == "vcpmcoupling") {
@@ -378,6 +385,13 @@ Run control:
                        0: sorted twice per step, as DualSPHysics. Results depend on it
                        at rounding level (the neighbour order), so hashes compare runs
                        of the same skin
+  -pairlanes:N         pair lanes of the fluid loop, 1, 2, 4 or 8: each fluid particle's
+                       candidates are split over N partial sums, added pairwise at the
+                       end; the GPU runs one thread per lane, so small cases get more
+                       threads. 0 (default, auto): the fewest lanes that give at least
+                       2^17 fluid lanes (1 from 131,072 fluid particles up). Results
+                       depend on it at rounding level, so hashes compare runs of the
+                       same lanes
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of
                        int(dt_F/dt_S)+1 (convergence studies; 0: automatic). The solid
                        is unstable when dt_F/N exceeds its stability limit

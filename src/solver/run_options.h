@@ -39,6 +39,9 @@ struct RunOptions {
     /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
     /// at every divide); unset: kDefaultSkinFraction (physics/cell_grid.h).
     std::optional<double> skin;
+    /// -pairlanes:N: pair lanes of the fluid loop, a power of two 1..physics::kMaxPairLanes
+    /// (physics/fluid_interaction.h); 0 (auto): resolvePairLanes.
+    int pair_lanes = 0;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
     std::optional<double> vcpm_dt_coef;  ///< -vcpmdtcoef:F (VcpmDtCoef), 0 < F <= 2

@@ -33,7 +33,7 @@ std::string fmt(const char* f, double v) {
 const char* kernelName(int k) { return k == 1 ? "cubic spline" : "Wendland C2"; }
 }  // namespace
 
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin) {
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes) {
     std::ostringstream s;
     s << dim << "D, " << (p.step_algorithm == 2 ? "symplectic" : "Verlet");
     if (p.step_algorithm == 1) s << " (Euler every " << p.verlet_steps << ")";
@@ -51,6 +51,7 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     else s << ", DBC";
     s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
     if (skin > 0) s << " with a skin of " << skin << " cell";
+    if (pair_lanes > 1) s << ", " << pair_lanes << " pair lanes";
     return s.str();
 }
 
@@ -65,6 +66,13 @@ int resolveCellDiv(const SolverCase& c, int cell_div) {
             return d;
     }
     return 1;
+}
+
+std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes) {
+    if (pair_lanes > 0) return std::uint32_t(pair_lanes);
+    std::uint32_t lanes = 1;
+    while (lanes < physics::kMaxPairLanes && std::uint64_t(c.nfluid) * lanes < kPairLaneThreads) lanes *= 2;
+    return lanes;
 }
 
 double resolveSkin(const RunOptions& o) { return o.skin.value_or(physics::kDefaultSkinFraction); }
@@ -104,7 +112,7 @@ static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
     return m;
 }
 
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes) {
     using namespace physics;
     cell_div = resolveCellDiv(c, cell_div);
     const ParticleSet& ps = c.particles;
@@ -124,6 +132,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin) {
     s.physics.ddt = DensityDiffusion(p.density_dt);
     s.physics.dim = c.constants.dimensions;
     s.symplectic = p.step_algorithm == 2;
+    s.pair_lanes = resolvePairLanes(c, pair_lanes);
 
     const double h = c.constants.h, dp = c.constants.dp, rho0 = c.constants.rhop0;
     FluidInputs fi;
@@ -203,7 +212,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
-    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o));
+    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o), o.pair_lanes);
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
@@ -226,7 +235,8 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nmoving = c.nmoving;
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
-    sum_.options = describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o));
+    sum_.options =
+        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (setup_.mdbc.enabled)

@@ -62,7 +62,14 @@ struct RunSummary {
 
 /// Builds the backend's initial data from the case (particles in id order); cells of
 /// 2h/cell_div (resolveCellDiv) with a skin of `skin` cells (cell_grid.h).
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin);
+/// `pair_lanes`: as RunOptions::pair_lanes (0: resolvePairLanes's choice).
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0);
+/// Fluid particles from which one pair lane suffices (resolvePairLanes).
+constexpr std::uint32_t kPairLaneThreads = 131072;
+/// The pair lanes a run uses: `pair_lanes` (RunOptions), or for 0 the fewest (a power of two,
+/// at most physics::kMaxPairLanes) that give the case's fluid particles at least
+/// kPairLaneThreads lanes: small cases get more GPU threads in their fluid loop.
+std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
 /// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
 double resolveSkin(const RunOptions& o);
 /// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) 4 in 3D
@@ -157,6 +164,7 @@ private:
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir);
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin);
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin,
+                            std::uint32_t pair_lanes = 1);
 
 }  // namespace seaspring::solver

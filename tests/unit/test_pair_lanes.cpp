@@ -1,0 +1,214 @@
+// SeaSpring — MIT licence.
+/// \file test_pair_lanes.cpp
+/// \brief The pair lanes of the fluid loop (physics/fluid_interaction.h), on random cell-sorted
+///        fluid and boundary particles in 2D and 3D, for three physics families:
+///        - the host's path (every lane's partial in one batched walk, PairBatch) gives the bits
+///          of the GPU's path (one direct walk per lane, fluidLanePartial), combined by
+///          combineLanes, for 1, 2, 4 and 8 lanes;
+///        - a warp's butterfly exchange (lane k takes lane k ^ w's value, the lower lane's first;
+///          core/lane_group.h on the GPU, emulated here) leaves lane 0 with combineLanes' result;
+///        - one lane is the plain sum, and more lanes change only the rounding: every candidate
+///          lands in exactly one lane (the sums agree to float rounding, and a lane left out or
+///          counted twice is far outside it).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "physics/cell_grid.h"
+#include "physics/fluid_constants.h"
+#include "physics/fluid_interaction.h"
+
+using namespace seaspring::physics;
+
+namespace {
+
+/// Random fluid particles over a box and boundary particles in a floor layer, each block sorted by
+/// cell (then index), with random velocities, densities (hence pressures) and SPS stresses.
+struct Scene {
+    CellGrid g;
+    FluidConstants c;
+    std::uint32_t nb = 0, nf = 0;
+    std::vector<Float4> poscell, velrho;
+    std::vector<Float2> press_ovrho;
+    std::vector<SymTensor> tau;
+    std::vector<std::uint32_t> cs_bound, cs_fluid;
+
+    InteractionInputs inputs() const {
+        InteractionInputs in;
+        in.poscell = poscell.data();
+        in.velrho = velrho.data();
+        in.cell_start_bound = cs_bound.data();
+        in.cell_start_fluid = cs_fluid.data();
+        in.tau = tau.data();
+        in.press_ovrho = press_ovrho.data();
+        return in;
+    }
+};
+
+Scene makeScene(int dim, int cell_div, std::mt19937& rng) {
+    Scene s;
+    const double dp = 0.01, h = 1.5 * dp, rho0 = 1000;
+    const double lx = 0.3, ly = dim == 3 ? 0.12 : 0.0, lz = 0.2;
+    EXPECT_TRUE(makeCellGrid(-0.03, dim == 3 ? -0.03 : 0.0, -0.03, lx + 0.03, dim == 3 ? ly + 0.03 : 0.0, lz + 0.03, h,
+                             cell_div, s.g, 0.05));
+    FluidInputs fi;
+    fi.h = h;
+    fi.dp = dp;
+    fi.dim = dim;
+    fi.cs0 = 20;
+    fi.b = 20.0 * 20.0 * rho0 / 7.0;
+    fi.rhop0 = rho0;
+    fi.massfluid = fi.massbound = rho0 * (dim == 3 ? dp * dp * dp : dp * dp);
+    fi.visco = 0.05;  // artificial alpha, or laminar nu (scaled below for the laminar families)
+    fi.visco_bound_factor = 0.7;
+    fi.ddt_value = 0.1;
+    fi.gravity_z = -9.81;
+    s.c = makeFluidConstants(fi);
+    s.nf = dim == 3 ? 2500 : 700;
+    s.nb = dim == 3 ? 900 : 120;
+    std::uniform_real_distribution<double> ux(0, lx), uy(0, ly), uz(0, lz), ub(-0.02, 0.0), uv(-0.5, 0.5),
+        urho(990, 1015), ut(-1e-4, 1e-4);
+    auto block = [&](std::uint32_t n, bool bound, std::uint32_t first, std::vector<std::uint32_t>& cs) {
+        std::vector<Float4> pc(n), vr(n);
+        std::vector<std::uint32_t> cell(n), order(n);
+        for (std::uint32_t k = 0; k < n; ++k) {
+            const Double3 p{ux(rng), dim == 3 ? uy(rng) : 0.0, bound ? ub(rng) : uz(rng)};
+            pc[k] = makePosCell(s.g, p, cell[k]);
+            vr[k] = Float4{float(uv(rng)), dim == 3 ? float(uv(rng)) : 0.f, float(uv(rng)), float(urho(rng))};
+        }
+        std::iota(order.begin(), order.end(), 0u);
+        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return cell[a] < cell[b]; });
+        const std::uint32_t nc = s.g.cellCount();
+        cs.assign(nc + 1, 0);
+        for (std::uint32_t k = 0; k < n; ++k) {
+            s.poscell[first + k] = pc[order[k]];
+            s.velrho[first + k] = vr[order[k]];
+            ++cs[cell[order[k]] + 1];
+        }
+        for (std::uint32_t k = 0; k < nc; ++k) cs[k + 1] += cs[k];
+        for (std::uint32_t k = 0; k <= nc; ++k) cs[k] += first;  // absolute indices, as the engine's
+    };
+    const std::uint32_t np = s.nb + s.nf;
+    s.poscell.resize(np);
+    s.velrho.resize(np);
+    block(s.nb, true, 0, s.cs_bound);
+    block(s.nf, false, s.nb, s.cs_fluid);
+    s.press_ovrho.resize(np);
+    s.tau.resize(np);
+    for (std::uint32_t i = 0; i < np; ++i) {
+        const float rho = s.velrho[i].w;
+        s.press_ovrho[i] = Float2{taitPressure7(rho, s.c.cteb, s.c.ovrhop0), 1.f / rho};
+        s.tau[i] = SymTensor{float(ut(rng)), float(ut(rng)), float(ut(rng)), float(ut(rng)), float(ut(rng)), float(ut(rng))};
+    }
+    return s;
+}
+
+bool sameBits(float a, float b) { return floatBitsToUint(a) == floatBitsToUint(b); }
+
+template <class Opt>
+::testing::AssertionResult sameAccum(const FluidAccum& a, const FluidAccum& b) {
+    const float fa[] = {a.ax, a.ay, a.az, a.ar, a.delta, a.visc};
+    const float fb[] = {b.ax, b.ay, b.az, b.ar, b.delta, b.visc};
+    for (int k = 0; k < 6; ++k)
+        if (!sameBits(fa[k], fb[k])) return ::testing::AssertionFailure() << "field " << k << ": " << fa[k] << " vs " << fb[k];
+    if (a.ddt_off != b.ddt_off) return ::testing::AssertionFailure() << "ddt_off";
+    if (Opt::sps) {
+        const float ga[] = {a.gradvel.xx, a.gradvel.xy, a.gradvel.xz, a.gradvel.yy, a.gradvel.yz, a.gradvel.zz};
+        const float gb[] = {b.gradvel.xx, b.gradvel.xy, b.gradvel.xz, b.gradvel.yy, b.gradvel.yz, b.gradvel.zz};
+        for (int k = 0; k < 6; ++k)
+            if (!sameBits(ga[k], gb[k])) return ::testing::AssertionFailure() << "gradvel " << k;
+    }
+    return ::testing::AssertionSuccess();
+}
+
+/// Lane 0's value after a warp's butterfly over `lanes` values (combine(lower lane's, upper's)).
+template <class Opt>
+FluidAccum butterflyLaneZero(std::vector<FluidAccum> v) {
+    const std::uint32_t lanes = std::uint32_t(v.size());
+    for (std::uint32_t w = 1; w < lanes; w <<= 1) {
+        std::vector<FluidAccum> next(lanes);
+        for (std::uint32_t k = 0; k < lanes; ++k) {
+            const std::uint32_t o = k ^ w;
+            next[k] = (k & w) ? combineLanePair<Opt>(v[o], v[k]) : combineLanePair<Opt>(v[k], v[o]);
+        }
+        v = next;
+    }
+    return v[0];
+}
+
+template <class Opt>
+void checkLanes(int cell_div, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    Scene s = makeScene(Opt::dim, cell_div, rng);
+    if (Opt::visco != Viscosity::Artificial) {
+        s.c.visco = 1e-3f;  // a laminar nu that matters against the pressure terms
+        s.c.visco_bound = 7e-4f;
+    }
+    const InteractionInputs in = s.inputs();
+    double worst = 0;       // largest lane-count difference, relative to the sum of |terms| scale
+    double scale_sum = 0;
+    long long wall_pairs = 0;
+    for (std::uint32_t i = s.nb; i < s.nb + s.nf; ++i) {
+        const FluidAccum one = fluidParticleForces<Opt, true>(i, in, s.c, s.g, 1);
+        ASSERT_TRUE(sameAccum<Opt>(one, fluidParticleForces<Opt, false>(i, in, s.c, s.g, 1))) << "particle " << i;
+        wall_pairs += one.ddt_off ? 1 : 0;
+        const double mag = std::abs(one.ax) + std::abs(one.ay) + std::abs(one.az);
+        scale_sum += mag;
+        for (std::uint32_t lanes : {2u, 4u, 8u}) {
+            const FluidAccum host = fluidParticleForces<Opt, true>(i, in, s.c, s.g, lanes);
+            ASSERT_TRUE(sameAccum<Opt>(host, fluidParticleForces<Opt, false>(i, in, s.c, s.g, lanes)))
+                << "host's batched lanes against one walk per lane, " << lanes << " lanes, particle " << i;
+            std::vector<FluidAccum> part(lanes);
+            for (std::uint32_t l = 0; l < lanes; ++l) part[l] = fluidLanePartial<Opt>(i, l, lanes, in, s.c, s.g);
+            FluidAccum warp = butterflyLaneZero<Opt>(part);
+            finishFluidAccum<Opt>(warp);
+            ASSERT_TRUE(sameAccum<Opt>(host, warp)) << "the warp's butterfly, " << lanes << " lanes, particle " << i;
+            EXPECT_EQ(host.ddt_off, one.ddt_off);
+            EXPECT_EQ(host.visc, one.visc);  // a maximum: exact in any order
+            const double d = std::abs(host.ax - one.ax) + std::abs(host.ay - one.ay) + std::abs(host.az - one.az);
+            worst = std::max(worst, d / (mag + 1e-3));
+        }
+    }
+    // Float rounding of sums of a few hundred terms: far below 1e-4 of the acceleration's size; a
+    // lane missing (1/lanes of the neighbours) would be of order 1e-1.
+    EXPECT_LT(worst, 1e-4) << Opt::dim << "D, cells of 2h/" << cell_div;
+    EXPECT_GT(scale_sum, 0.0);
+    if (Opt::ddt == DensityDiffusion::Fourtakas) {
+        EXPECT_GT(wall_pairs, 0);  // boundary neighbours occur
+    }
+}
+
+}  // namespace
+
+TEST(PairLanes, ArtificialDdt3In2DAnd3D) {
+    checkLanes<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 2>>(2, 11);
+    checkLanes<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 3>>(4, 12);
+}
+
+TEST(PairLanes, CubicLaminarMolteniAndWendlandSps) {
+    checkLanes<FluidOptions<CubicKernel, Viscosity::Laminar, DensityDiffusion::Molteni, 2>>(1, 13);
+    checkLanes<FluidOptions<WendlandKernel, Viscosity::LaminarSps, DensityDiffusion::Fourtakas, 3>>(2, 14);
+}
+
+TEST(PairLanes, CombineLanesIsThePairwiseTree) {
+    using Opt = FluidOptions<WendlandKernel, Viscosity::LaminarSps, DensityDiffusion::Fourtakas, 3>;
+    // Values whose sums round differently in other orders: 1e8 + 1 - 1e8 ...
+    FluidAccum a[4];
+    const float x[4] = {1e8f, 1.f, -1e8f, 1.f};
+    for (int k = 0; k < 4; ++k) {
+        a[k].ax = x[k];
+        a[k].gradvel = SymTensor{x[k], 0, 0, 0, 0, 0};
+        a[k].visc = float(k);
+        a[k].ddt_off = k == 3;
+    }
+    combineLanes<Opt>(a, 4);
+    EXPECT_EQ(a[0].ax, (1e8f + 1.f) + (-1e8f + 1.f));  // = 0 in float; ((1e8 + 1) - 1e8) + 1 = 1
+    EXPECT_EQ(a[0].gradvel.xx, a[0].ax);
+    EXPECT_EQ(a[0].visc, 3.f);
+    EXPECT_TRUE(a[0].ddt_off);
+}
