@@ -48,6 +48,9 @@ public:
             throw std::invalid_argument("Engine::init: " + std::to_string(s.pair_lanes) +
                                         " pair lanes (a power of two up to " +
                                         std::to_string(physics::kMaxPairLanes) + ")");
+        if (std::uint64_t(s.nfluid) * s.pair_lanes > 0xffffffffull)
+            throw Error(std::to_string(s.nfluid) + " fluid particles x " + std::to_string(s.pair_lanes) +
+                        " pair lanes exceed 2^32 GPU threads: run with fewer -pairlanes");
         dropForcesAhead();
         setup_ = s;
         sorted_ = false;

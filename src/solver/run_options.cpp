@@ -255,7 +255,7 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
                 usageError(g.arg + ": " + g.value + " is larger than 0.5" +
                            " (the skin is a fraction of the cell size)");
         } else if (name == "pairlanes") {
-            o.pair_lanes = int(toInteger(g, 0, physics::kMaxPairLanes));
+            o.pair_lanes = int(toInteger(g, 0, physics::kMaxPairLanes, " (pair lanes: 1, 2, 4 or 8; 0: auto)"));
             if ((o.pair_lanes & (o.pair_lanes - 1)) != 0)
                 usageError(g.arg + ": " + g.value + " is not a power of two (pair lanes: 1, 2, 4 or 8; 0: auto)");
         } else if (name == "vcpmsubsteps") {
@@ -388,8 +388,9 @@ Run control:
   -pairlanes:N         pair lanes of the fluid loop, 1, 2, 4 or 8: each fluid particle's
                        candidates are split over N partial sums, added pairwise at the
                        end; the GPU runs one thread per lane, so small cases get more
-                       threads. 0 (default, auto): the fewest lanes that give at least
-                       2^17 fluid lanes (1 from 131,072 fluid particles up). Results
+                       threads. 0 (default, auto): the fewest lanes, at most 4, that
+                       give at least 2^17 fluid lanes (1 from 131,072 fluid particles
+                       up). Results
                        depend on it at rounding level, so hashes compare runs of the
                        same lanes
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of

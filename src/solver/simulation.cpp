@@ -71,7 +71,7 @@ int resolveCellDiv(const SolverCase& c, int cell_div) {
 std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes) {
     if (pair_lanes > 0) return std::uint32_t(pair_lanes);
     std::uint32_t lanes = 1;
-    while (lanes < physics::kMaxPairLanes && std::uint64_t(c.nfluid) * lanes < kPairLaneThreads) lanes *= 2;
+    while (lanes < kAutoPairLanesMax && std::uint64_t(c.nfluid) * lanes < kPairLaneThreads) lanes *= 2;
     return lanes;
 }
 

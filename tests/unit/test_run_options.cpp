@@ -98,6 +98,9 @@ TEST(RunOptions, RunControl) {
     EXPECT_FALSE(parseWith({}).skin.has_value());
     EXPECT_EQ(*parseWith({"-skin:0"}).skin, 0.0);
     EXPECT_EQ(*parseWith({"-skin:0.25"}).skin, 0.25);
+    EXPECT_EQ(parseWith({}).pair_lanes, 0);
+    EXPECT_EQ(parseWith({"-pairlanes:1"}).pair_lanes, 1);
+    EXPECT_EQ(parseWith({"-pairlanes:8"}).pair_lanes, 8);
     EXPECT_EQ(parseWith({"-progress:0"}).progress_interval, 0.0);
     EXPECT_EQ(parseWith({"-progress:2.5"}).progress_interval, 2.5);
     EXPECT_TRUE(parseWith({"-quiet"}).quiet);
@@ -221,6 +224,8 @@ TEST(RunOptions, UnknownAndMalformedOptions) {
     expectError({"-cpu:1"}, "-cpu:1: -cpu takes no value");
     expectError({"-skin:0.7"}, "-skin:0.7: 0.7 is larger than 0.5 (the skin is a fraction of the cell size)");
     expectError({"-skin:-1"}, "-skin:-1: -1 must be >= 0");
+    expectError({"-pairlanes:3"}, "-pairlanes:3: 3 is not a power of two (pair lanes: 1, 2, 4 or 8; 0: auto)");
+    expectError({"-pairlanes:16"}, "-pairlanes:16: 16 must be 0..8 (pair lanes: 1, 2, 4 or 8; 0: auto)");
     expectError({"-symplectic:1"}, "-symplectic:1: -symplectic takes no value");
     expectError({"-quiet:yes"}, "-quiet:yes: -quiet takes no value");
     expectError({"-cfl"}, "-cfl: needs a value (-cfl:VALUE)");
