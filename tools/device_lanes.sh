@@ -2,7 +2,8 @@
 # Pair lanes (-pairlanes, physics/fluid_interaction.h) measured on the GPU machine: the small
 # cases of issue 16 (Antoci gate 2D over its first 0.05 s; FlexStruc Liao 2D, DualSPHysics'
 # CaseDambreak2D_FSI_Def.xml, over 0.05 s) and SPHERIC Test 2 at 116,658 and 1,116,258 particles
-# (DualSPHysics' Spheric2Dam_100K.xml and _01M.xml, fixed step counts), each with several lane
+# (DualSPHysics' Spheric2Dam_100K.xml and _01M.xml, fixed step counts; optionally `sphdp`, the
+# 100K definition at -dp:LANES_SPH_DP, default 0.0175: about 114 k fluid particles), each with several lane
 # counts, all runs of a round back to back and the rounds repeated. Prints one table last: the
 # median figure per case and lane count, its ratio to one lane, and the state hashes.
 # Runs from the repository root with build-dev carried (tools/device_build.sh).
@@ -30,6 +31,7 @@ kase[antoci2d]=$work/antoci; args[antoci2d]="-tmax:0.05"; lanes_of[antoci2d]="1 
 kase[liao2d]=$work/liao2d/liao; args[liao2d]="-tmax:0.05"; lanes_of[liao2d]="1 2 4 8"
 kase[sph100k]=$work/sph100k; args[sph100k]="-nsteps:400"; lanes_of[sph100k]="1 2 4 8"
 kase[sph1m]=$work/sph1m; args[sph1m]="-nsteps:200"; lanes_of[sph1m]="1 2"
+kase[sphdp]=$work/sphdp; args[sphdp]="-nsteps:300"; lanes_of[sphdp]="1 2 4"
 for c in $cases; do
   case $c in
     antoci2d) gen "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" "$work/antoci" ;;
@@ -38,6 +40,7 @@ for c in $cases; do
             gen "$work/liao2d/CaseDambreak2D_FSI_Def.xml" "$work/liao2d/liao" ;;
     sph100k) gen "$shared/Spheric2Dam_100K.xml" "$work/sph100k" ;;
     sph1m) gen "$shared/Spheric2Dam_01M.xml" "$work/sph1m" ;;
+    sphdp) gen "$shared/Spheric2Dam_100K.xml" "$work/sphdp" -dp:"${LANES_SPH_DP:-0.0175}" ;;
   esac
 done
 
