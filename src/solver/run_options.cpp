@@ -388,9 +388,8 @@ Run control:
   -pairlanes:N         pair lanes of the fluid loop, 1, 2, 4 or 8: each fluid particle's
                        candidates are split over N partial sums, added pairwise at the
                        end; the GPU runs one thread per lane, so small cases get more
-                       threads. 0 (default, auto): the fewest lanes, at most 4, that
-                       give at least 2^17 fluid lanes (1 from 131,072 fluid particles
-                       up). Results
+                       threads. 0 (default, auto): 4 below 49,152 fluid particles, 2
+                       below 98,304, else 1. Results
                        depend on it at rounding level, so hashes compare runs of the
                        same lanes
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of

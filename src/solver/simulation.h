@@ -65,14 +65,15 @@ struct RunSummary {
 /// `pair_lanes`: as RunOptions::pair_lanes (0: resolvePairLanes's choice).
 BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0);
 /// Fluid particles from which one pair lane suffices (resolvePairLanes).
-constexpr std::uint32_t kPairLaneThreads = 131072;
+constexpr std::uint32_t kPairLaneThreads = 98304;
 /// The most pair lanes resolvePairLanes chooses.
 constexpr std::uint32_t kAutoPairLanesMax = 4;
 /// The pair lanes a run uses: `pair_lanes` (RunOptions), or for 0 the fewest (a power of two,
 /// at most kAutoPairLanesMax) that give the case's fluid particles at least kPairLaneThreads
-/// lanes: small cases get more GPU threads in their fluid loop. Measured on an NVIDIA H100
-/// (tools/device_lanes.sh, docs/performance.md): 4 lanes were the fastest or within 1.5% of it
-/// from 13,860 to 39,312 fluid particles; 2 lanes were 12% slower at 652,212.
+/// lanes (4 below 49,152 fluid particles, 2 below 98,304, then 1): small cases get more GPU
+/// threads in their fluid loop. Measured on an NVIDIA H100 (tools/device_lanes.sh,
+/// docs/performance.md): 4 lanes were the fastest or within 1.5% of it from 13,860 to 39,312
+/// fluid particles; at 115,920 two lanes were 2% slower than one, at 652,212 12% slower.
 std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
 /// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
 double resolveSkin(const RunOptions& o);
