@@ -129,5 +129,10 @@ template <typename T>
 void copyToHost(const DeviceBuffer<T>& src, std::vector<T>& dst) {
     src.download(dst);
 }
+/// The bytes of src into dst (src.size() * sizeof(T) bytes of host memory).
+template <typename T>
+void copyToHostBytes(const DeviceBuffer<T>& src, void* dst) {
+    if (!src.empty()) SEASPRING_CUDA_CHECK(cudaMemcpy(dst, src.data(), src.size() * sizeof(T), cudaMemcpyDeviceToHost));
+}
 
 }  // namespace seaspring::cuda

@@ -8,6 +8,7 @@
 ///        cuda/device_buffer.cuh.
 #pragma once
 
+#include <cstring>
 #include <vector>
 
 namespace seaspring::solver {
@@ -29,6 +30,11 @@ void copyBuffer(std::vector<T>& dst, const std::vector<T>& src) {
 template <typename T>
 void copyToHost(const std::vector<T>& src, std::vector<T>& dst) {
     dst = src;
+}
+/// The bytes of src into dst (src.size() * sizeof(T) bytes of host memory).
+template <typename T>
+void copyToHostBytes(const std::vector<T>& src, void* dst) {
+    if (!src.empty()) std::memcpy(dst, src.data(), src.size() * sizeof(T));
 }
 
 }  // namespace seaspring::solver

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -402,16 +403,22 @@ private:
     }
 
     /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
+    /// Each field goes through one staging buffer kept by the engine (no allocation, no fresh
+    /// pages per download: the periodic blow-up scan downloads the state every -blowupcheck
+    /// steps) into `out`, whose vectors keep their capacity when the caller reuses it.
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
-        std::vector<std::uint32_t> ids;
-        copyToHost(p_.id, ids);
+        copyToHost(p_.id, ids_host_);
+        const std::uint32_t* ids = ids_host_.data();
         forEachFieldPair(p_, out, [&](auto& buf, auto& host, unsigned flags) {
             if ((any != ~0u && (flags & any) == 0) || (flags & none) != 0 || buf.empty()) return;
-            std::remove_reference_t<decltype(host)> sorted;
-            copyToHost(buf, sorted);
-            host.resize(sorted.size());
-            for (std::size_t i = 0; i < sorted.size(); ++i) host[ids[i]] = sorted[i];
+            using T = typename std::remove_reference_t<decltype(host)>::value_type;
+            const std::size_t n = buf.size();
+            if (stage_.size() < n * sizeof(T)) stage_.resize(n * sizeof(T));
+            copyToHostBytes(buf, stage_.data());
+            host.resize(n);
+            const unsigned char* s = stage_.data();
+            for (std::size_t i = 0; i < n; ++i) std::memcpy(&host[ids[i]], s + i * sizeof(T), sizeof(T));
         });
     }
 
@@ -549,6 +556,8 @@ private:
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
+    std::vector<std::uint32_t> ids_host_;  ///< downloadIdOrder: the ids in sorted order
+    std::vector<unsigned char> stage_;     ///< downloadIdOrder: one field in sorted order
     Buf<physics::Double3> moving_pos0_;
     Buf<physics::Float4> mdbc_normal0_;      ///< mDBC only: per boundary id
     Buf<physics::Float4> mdbc_visc_vel_;     ///< mDBC SlipMode 2/3: per boundary particle (sorted), the viscous velocity

@@ -256,7 +256,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     }
 }
 
-bool Simulation::healthy(const HostState& st, double time, long long step) {
+bool Simulation::healthy(HostState& st, double time, long long step) {
     Health& h = *health_;
     std::optional<BlowupDiagnosis> d = h.check.scan(st, time, step, h.dt);
     for (const std::string& w : h.check.takeWarnings()) log_ << w << "\n";
@@ -265,7 +265,7 @@ bool Simulation::healthy(const HostState& st, double time, long long step) {
         blownUp(std::move(*d));
         return false;
     }
-    h.last_good = st;
+    std::swap(h.last_good, st);
     h.good_time = time;
     h.good_step = step;
     return true;
@@ -283,9 +283,8 @@ bool Simulation::checkStep(double t, long long step, double dt, std::uint32_t ac
     // (it names the particles and the option; a state that passes it goes on).
     const bool solid_alarm = !setup_.solid.empty() && backend_->solidsPastBounds() > 0;
     if (output_due || (!solid_alarm && !h.check.scanDue(step))) return true;
-    HostState st;
-    backend_->download(st);
-    return healthy(st, t, step);
+    backend_->download(h.scan);
+    return healthy(h.scan, t, step);
 }
 
 void Simulation::stepFailed(double t, long long step, const std::string& what) {
@@ -315,10 +314,10 @@ void Simulation::blownUp(BlowupDiagnosis d) {
 }
 
 bool Simulation::output(double time, long long step) {
-    HostState st;
-    backend_->download(st);
-    if (!healthy(st, time, step)) return false;
-    writeOutput(st, time, step, true);
+    Health& h = *health_;
+    backend_->download(h.scan);
+    if (!healthy(h.scan, time, step)) return false;
+    writeOutput(h.last_good, time, step, true);  // the state just downloaded (healthy swapped it in)
     return true;
 }
 

@@ -104,8 +104,9 @@ private:
     bool output(double time, long long step);
     /// Writes `st` as the next output (part files, ledger row when `ledger`, gauges flushed).
     void writeOutput(const HostState& st, double time, long long step, bool ledger);
-    /// The blow-up scan of a downloaded state; on a good state keeps it as the last good one.
-    bool healthy(const HostState& st, double time, long long step);
+    /// The blow-up scan of a downloaded state; a good state becomes the last good one (swapped
+    /// with it: `st` is left holding the previous one).
+    bool healthy(HostState& st, double time, long long step);
     /// The blow-up checks after a step (blowup_check.h): the per-step ones, then a scan of the
     /// state every -blowupcheck steps unless an output (which scans) is due; they only read the
     /// state. Returns false when the run blew up.

@@ -27,6 +27,9 @@ struct Simulation::Ledger {
 struct Simulation::Health {
     BlowupCheck check;
     HostState last_good;      ///< the last state a scan passed
+    /// What scans and outputs download into: a good state is swapped with last_good, so the
+    /// next download reuses the older one's memory (no copy, no allocation).
+    HostState scan;
     double good_time = -1;    ///< its time (-1: none yet)
     long long good_step = 0;
     double written_time = -1; ///< time of the last output written
