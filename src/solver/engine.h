@@ -406,8 +406,8 @@ private:
     /// Each field goes through the execution policy's staging buffer (pinned on the GPU; kept,
     /// so no allocation and no fresh pages per download: the periodic blow-up scan downloads
     /// the state every -blowupcheck steps) into `out`, whose vectors keep their capacity when
-    /// the caller reuses it; the scatter to id order runs on the run's OpenMP threads (one
-    /// beside a GPU; core/id_order.h).
+    /// the caller reuses it; the scatter to id order runs on the host's OpenMP threads
+    /// (core/id_order.h).
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
         copyToHost(p_.id, ids_host_);
@@ -419,7 +419,7 @@ private:
             unsigned char* stage = exec_.hostStaging(n * sizeof(T));
             copyToHostBytes(buf, stage);
             host.resize(n);
-            scatterToIdOrder(stage, sizeof(T), ids, n, host.data(), exec_.threads());
+            scatterToIdOrder(stage, sizeof(T), ids, n, host.data());
         });
     }
 
