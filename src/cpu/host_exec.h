@@ -134,13 +134,6 @@ public:
     }
     void synchronize() const {}
 
-    /// At least `bytes` of host memory for downloads (kept and grown as needed; valid until the
-    /// next call), as CudaExec's pinned staging.
-    unsigned char* hostStaging(std::size_t bytes) {
-        if (staging_.size() < bytes) staging_.resize(bytes);
-        return staging_.data();
-    }
-
     /// As CudaExec::gate: the passes run under a set gate do nothing when *g is non-zero (read
     /// when each pass starts, as the GPU's kernels do).
     void gate(const std::uint32_t* g) { gate_ = g; }
@@ -159,7 +152,6 @@ private:
     };
     int threads_;
     const std::uint32_t* gate_ = nullptr;
-    std::vector<unsigned char> staging_;  ///< hostStaging's memory
 };
 
 }  // namespace seaspring::cpu

@@ -81,16 +81,4 @@ std::uint32_t CudaExec::lowerBound(const std::uint64_t* keys, std::uint32_t b, s
     return r;
 }
 
-unsigned char* CudaExec::hostStaging(std::size_t bytes) {
-    if (bytes > staging_bytes_) {
-        staging_.reset();
-        staging_bytes_ = 0;
-        void* p = nullptr;
-        SEASPRING_CUDA_CHECK(cudaMallocHost(&p, bytes));
-        staging_.reset(p);
-        staging_bytes_ = bytes;
-    }
-    return static_cast<unsigned char*>(staging_.get());
-}
-
 }  // namespace seaspring::cuda

@@ -268,10 +268,6 @@ public:
     }
     void synchronize() const { SEASPRING_CUDA_CHECK(cudaDeviceSynchronize()); }
 
-    /// At least `bytes` of pinned host memory for downloads (kept and grown as needed; valid
-    /// until the next call): a device-to-host copy into it runs at the link's full rate.
-    unsigned char* hostStaging(std::size_t bytes);
-
     /// From now on, until gate(nullptr), every forEach, forEachIndependent, reduce and sequence
     /// launch does nothing when *g (a device word, e.g. a Deferred's device()) is non-zero when
     /// it runs; a reduction then gives `init`. Copies, sorts and searches cannot be gated:
@@ -315,8 +311,6 @@ private:
         void operator()(void* p) const { cudaFreeHost(p); }
     };
     std::unique_ptr<void, FreeHost> readback_;  ///< pinned host memory for the readbacks (kReadbackBytes)
-    std::unique_ptr<void, FreeHost> staging_;   ///< hostStaging's pinned memory
-    std::size_t staging_bytes_ = 0;
     std::uint32_t block_max_ = kSequenceBlockMaxDefault;
     const std::uint32_t* gate_ = nullptr;  ///< see gate()
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;

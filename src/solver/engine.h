@@ -403,11 +403,10 @@ private:
     }
 
     /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
-    /// Each field goes through the execution policy's staging buffer (pinned on the GPU; kept,
-    /// so no allocation and no fresh pages per download: the periodic blow-up scan downloads
-    /// the state every -blowupcheck steps) into `out`, whose vectors keep their capacity when
-    /// the caller reuses it; the scatter to id order runs on the host's OpenMP threads
-    /// (core/id_order.h).
+    /// Each field goes through one staging buffer kept by the engine (no allocation, no fresh
+    /// pages per download: the periodic blow-up scan downloads the state every -blowupcheck
+    /// steps) into `out`, whose vectors keep their capacity when the caller reuses it; the
+    /// scatter to id order runs on the host's OpenMP threads (core/id_order.h).
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
         copyToHost(p_.id, ids_host_);
@@ -416,10 +415,10 @@ private:
             if ((any != ~0u && (flags & any) == 0) || (flags & none) != 0 || buf.empty()) return;
             using T = typename std::remove_reference_t<decltype(host)>::value_type;
             const std::size_t n = buf.size();
-            unsigned char* stage = exec_.hostStaging(n * sizeof(T));
-            copyToHostBytes(buf, stage);
+            if (stage_.size() < n * sizeof(T)) stage_.resize(n * sizeof(T));
+            copyToHostBytes(buf, stage_.data());
             host.resize(n);
-            scatterToIdOrder(stage, sizeof(T), ids, n, host.data());
+            scatterToIdOrder(stage_.data(), sizeof(T), ids, n, host.data());
         });
     }
 
@@ -558,6 +557,7 @@ private:
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
     std::vector<std::uint32_t> ids_host_;  ///< downloadIdOrder: the ids in sorted order
+    std::vector<unsigned char> stage_;     ///< downloadIdOrder: one field in sorted order
     Buf<physics::Double3> moving_pos0_;
     Buf<physics::Float4> mdbc_normal0_;      ///< mDBC only: per boundary id
     Buf<physics::Float4> mdbc_visc_vel_;     ///< mDBC SlipMode 2/3: per boundary particle (sorted), the viscous velocity
