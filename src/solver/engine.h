@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -21,7 +22,6 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/id_order.h"
 #include "solver/backend.h"
 #include "solver/force_passes.h"
 #include "solver/launch.h"
@@ -405,8 +405,7 @@ private:
     /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
     /// Each field goes through one staging buffer kept by the engine (no allocation, no fresh
     /// pages per download: the periodic blow-up scan downloads the state every -blowupcheck
-    /// steps) into `out`, whose vectors keep their capacity when the caller reuses it; the
-    /// scatter to id order runs on the host's OpenMP threads (core/id_order.h).
+    /// steps) into `out`, whose vectors keep their capacity when the caller reuses it.
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
         copyToHost(p_.id, ids_host_);
@@ -418,7 +417,8 @@ private:
             if (stage_.size() < n * sizeof(T)) stage_.resize(n * sizeof(T));
             copyToHostBytes(buf, stage_.data());
             host.resize(n);
-            scatterToIdOrder(stage_.data(), sizeof(T), ids, n, host.data());
+            const unsigned char* s = stage_.data();
+            for (std::size_t i = 0; i < n; ++i) std::memcpy(&host[ids[i]], s + i * sizeof(T), sizeof(T));
         });
     }
 
