@@ -22,13 +22,13 @@ SEASPRING_HD inline void writeFluidAccum(const physics::ParticleView& v, std::ui
     if (Opt::sps) v.gradvel[i] = acc.gradvel;
 }
 
-/// Fluid particle i: all its pairs, every pair lane in one call (the host's path; kCompact:
-/// the batched form, same bits).
-template <class Opt, bool kCompact>
+/// Fluid particle i: all its pairs, every pair lane in one call, in the batched form (the
+/// host's path; the GPU's is FluidLanesPass, same bits).
+template <class Opt>
 struct FluidForcesPass {
     ForceArgs a;
     SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
-        writeFluidAccum<Opt>(a.v, i, physics::fluidParticleForces<Opt, kCompact>(i, a.in, a.c, a.g, a.lanes));
+        writeFluidAccum<Opt>(a.v, i, physics::fluidParticleForces<Opt, true>(i, a.in, a.c, a.g, a.lanes));
     }
 };
 
@@ -156,7 +156,7 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     const std::uint32_t fe = kCompact ? a.np : (a.np - a.nbound) << a.lane_shift;
     dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
         using Opt = decltype(opt);
-        using FluidPass = std::conditional_t<kCompact, FluidForcesPass<Opt, true>, FluidLanesPass<Opt>>;
+        using FluidPass = std::conditional_t<kCompact, FluidForcesPass<Opt>, FluidLanesPass<Opt>>;
         const FluidPass fluid{a};
         const BoundForcesPass<BoundOpt, kCompact> bound{a};
         if (a.nhydro == 0) {
