@@ -11,6 +11,7 @@
 
 #include "core/host_device.h"
 #include "physics/sph_types.h"
+#include "physics/time_integration.h"
 
 namespace seaspring::physics {
 
@@ -46,6 +47,14 @@ SEASPRING_HD inline bool speedPastBound(double vx, double vy, double vz, double 
 
 /// A value that is not finite.
 SEASPRING_HD inline bool notFinite(double x) { return !(x - x == 0.0); }
+
+/// A particle the state scan rejects (solver/blowup_check.h): a position, velocity or density
+/// that is not finite, or fluid excluded for that reason. The host's scan of a downloaded state
+/// and the backends' count of such particles (NotFiniteCountPass) both decide with it.
+SEASPRING_HD inline bool particleNotFinite(const Double3& p, const Float4& vr, std::uint8_t excl) {
+    return notFinite(p.x) || notFinite(p.y) || notFinite(p.z) || notFinite(vr.x) || notFinite(vr.y) ||
+           notFinite(vr.z) || notFinite(vr.w) || excl == kExcludedNotFinite;
+}
 
 /// Why a VCPM solid particle's alarm was raised (SolidAlarm::kind).
 enum SolidAlarmKind : std::uint32_t {

@@ -180,6 +180,13 @@ public:
     virtual void gauges(GaugeResults& out) = 0;
     /// Active fluid particles now.
     virtual std::uint32_t activeFluid() = 0;
+    /// The particles (all of them, excluded ones included) that physics::particleNotFinite
+    /// rejects: the blow-up scan's test, counted where the state lives (an integer sum, exact
+    /// in any order), so a scan that finds none needs no download (blowup_check.h).
+    virtual std::uint32_t notFiniteCount() = 0;
+    /// The VCPM solid particles' positions, solid order (empty without solids): what a quick
+    /// scan needs for the out-of-domain counts.
+    virtual void downloadSolidPositions(std::vector<physics::Double3>& out) = 0;
     /// Waits for queued device work (phase timers only; the CPU backend has none).
     virtual void synchronize() {}
     virtual void download(HostState& out) = 0;

@@ -3,6 +3,7 @@
 /// \brief Blow-up detection (see blowup_check.h).
 #include "solver/blowup_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,6 +29,10 @@ bool finite4(const physics::Float4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+/// Particles a state holds per kept scan before the last good state is kept only at every
+/// K-th scan (resolveKeepEvery).
+constexpr std::size_t kKeepParticles = std::size_t(1) << 18;
+
 /// Keeps the first kNamedParticles offenders and the largest value.
 struct Offenders {
     std::vector<BlowupParticle> first;
@@ -43,7 +48,8 @@ struct Offenders {
 }  // namespace
 
 BlowupCheck::BlowupCheck(const SolverCase& c, const BackendSetup& s, const RunOptions& o)
-    : case_(c), setup_(s), opt_(o), every_(o.blowup_check_every) {
+    : case_(c), setup_(s), opt_(o), every_(o.blowup_check_every),
+      keep_every_(resolveKeepEvery(o.blowup_keep_every, c.particles.size())) {
     for (const SolidBody& b : c.solids) outside_.push_back({b.mkbound, 0, 0, 0, -1});
     for (std::uint32_t r = 0; r < s.solid.nsolid; ++r) ++outside_[s.solid.body[r]].particles;
 }
@@ -94,13 +100,42 @@ BlowupDiagnosis BlowupCheck::nonFiniteStep(double t, long long step, const std::
     return d;
 }
 
+long long resolveKeepEvery(long long requested, std::size_t particles) {
+    if (requested > 0) return requested;
+    return std::max<long long>(1, (long long)((particles + kKeepParticles - 1) / kKeepParticles));
+}
+
+void BlowupCheck::quickScan(const std::vector<physics::Double3>& solid_pos, double t, long long step) {
+    last_scan_ = step;
+    ++since_keep_;
+    countOutside(solid_pos.data(), t);
+}
+
+void BlowupCheck::countOutside(const physics::Double3* solid_pos, double t) {
+    const SolidSetup& so = setup_.solid;
+    std::vector<std::uint32_t> out(outside_.size(), 0);
+    for (std::uint32_t r = 0; r < so.nsolid; ++r)
+        if (physics::solidOutside(so.keep, solid_pos[r])) ++out[so.body[r]];
+    for (std::size_t b = 0; b < outside_.size(); ++b) {
+        SolidOutside& o = outside_[b];
+        o.outside = out[b];
+        if (out[b] > o.most) o.most = out[b];
+        if (out[b] > 0 && o.first_time < 0) {
+            o.first_time = t;
+            warnings_.push_back("warning: solid mkbound=" + std::to_string(o.mkbound) + ": " + std::to_string(out[b]) +
+                                " of " + std::to_string(o.particles) + " particles outside the simulation domain (by more than 2h) at t=" +
+                                num(t) + " s (counted in run.json; each is frozen where it left, at rest, its bonds broken)");
+        }
+    }
+}
+
 std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, long long step, double dt) {
     last_scan_ = step;
+    since_keep_ = 0;
     const std::size_t np = st.pos.size();
     Offenders bad;
     for (std::size_t i = 0; i < np; ++i)
-        if (!finite3(st.pos[i]) || !finite4(st.velrho[i]) || st.excl[i] == physics::kExcludedNotFinite)
-            bad.add(std::uint32_t(i), st.pos[i], NAN);
+        if (physics::particleNotFinite(st.pos[i], st.velrho[i], st.excl[i])) bad.add(std::uint32_t(i), st.pos[i], NAN);
     BlowupDiagnosis d;
     d.time = t;
     d.step = step;
@@ -121,28 +156,16 @@ std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, 
     constexpr int kKinds = int(physics::kSolidAlarmContactMotion) + 1;
     Offenders alarmed[kKinds];
     double first_time[kKinds] = {};
-    std::vector<std::uint32_t> out(outside_.size(), 0);
+    if (so.nsolid > 0) countOutside(st.pos.data() + so.first_solid, t);
     for (std::uint32_t r = 0; r < so.nsolid; ++r) {
         const std::uint32_t id = so.first_solid + r;
         const physics::Double3 p = st.pos[id];
-        if (physics::solidOutside(so.keep, p)) ++out[so.body[r]];
         if (r >= st.solid_alarm.size()) continue;
         const physics::SolidAlarm& a = st.solid_alarm[r];
         if (a.kind == physics::kSolidAlarmNone || a.kind >= std::uint32_t(kKinds)) continue;
         Offenders& o = alarmed[a.kind];
         if (o.count == 0 || a.time < first_time[a.kind]) first_time[a.kind] = a.time;
         o.add(id, p, a.value);
-    }
-    for (std::size_t b = 0; b < outside_.size(); ++b) {
-        SolidOutside& o = outside_[b];
-        o.outside = out[b];
-        if (out[b] > o.most) o.most = out[b];
-        if (out[b] > 0 && o.first_time < 0) {
-            o.first_time = t;
-            warnings_.push_back("warning: solid mkbound=" + std::to_string(o.mkbound) + ": " + std::to_string(out[b]) +
-                                " of " + std::to_string(o.particles) + " particles outside the simulation domain (by more than 2h) at t=" +
-                                num(t) + " s (counted in run.json; each is frozen where it left, at rest, its bonds broken)");
-        }
     }
     // The kind raised first (on a tie, the lower kind).
     int kind = 0;

@@ -10,11 +10,18 @@
 ///   (physics::kMaxDtMinStreak);
 /// - a scan of a downloaded state (at every output before it is written, and every
 ///   `-blowupcheck:N` steps): non-finite positions, velocities or densities of any particle,
-///   fluid excluded as not finite, VCPM solid bonds strained past physics::kMaxBondStrain and
-///   solid speeds past VcpmMaterial::max_speed (physics/blowup_bounds.h). The scan also counts,
-///   per solid body, the particles outside the simulation domain (SolidSetup::keep: frozen).
-/// Every check visits the particles in id order on the host, so CPU and GPU runs reach the same
-/// verdict at the same step.
+///   fluid excluded as not finite (physics::particleNotFinite), and the alarms of VCPM solid
+///   bonds strained past physics::kMaxBondStrain and solid speeds past VcpmMaterial::max_speed
+///   (physics/blowup_bounds.h). The scan also counts, per solid body, the particles outside the
+///   simulation domain (SolidSetup::keep: frozen). A state that passes is kept as the last good
+///   one.
+/// Between outputs only every K-th periodic scan (`-blowupkeep:K`; auto: one per 2^18 particles
+/// of the case, so 1 below 262,145) downloads the state. The others are quick: the backend
+/// counts the particles that fail physics::particleNotFinite (an integer sum, the same in any
+/// order) and only the solids' positions come to the host for the out-of-domain counts; a
+/// count above zero, or a solid alarm, makes it a full scan at once, which names the particles.
+/// Every check decides with the same functions on the host's id-order copy or the backend's
+/// exact count, so CPU and GPU runs reach the same verdict at the same step.
 #pragma once
 
 #include <cmath>
@@ -77,8 +84,17 @@ public:
     /// Whether a scan is due after `step`: -blowupcheck steps since the last scan (solid-only
     /// runs count sub-steps, which advance in chunks).
     bool scanDue(long long step) const { return every_ > 0 && step - last_scan_ >= every_; }
+    /// Whether the scan due now must download the state (every K-th periodic scan; outputs and
+    /// solid alarms always do).
+    bool keepDue() const { return since_keep_ + 1 >= keep_every_; }
     /// Scans a state (id order); updates the per-body out-of-domain counts.
     std::optional<BlowupDiagnosis> scan(const HostState& st, double t, long long step, double dt);
+    /// A quick scan that passed: the backend counted no particle failing particleNotFinite (a
+    /// count above zero takes the full scan instead). `solid_pos`: the solid particles'
+    /// positions (solid order) for the out-of-domain counts.
+    void quickScan(const std::vector<physics::Double3>& solid_pos, double t, long long step);
+    /// Periodic scans per kept state (resolveKeepEvery).
+    long long keepEvery() const { return keep_every_; }
     /// Adds the particles a per-step diagnosis is about (excluded fluid, which reason, where).
     void describe(BlowupDiagnosis& d, const HostState& st) const;
     /// Out-of-domain counts per body (empty without solids).
@@ -88,6 +104,7 @@ public:
     std::vector<std::string> takeWarnings();
 
 private:
+    void countOutside(const physics::Double3* solid_pos, double t);
     std::string solidOption(double dt) const;
     std::string fluidOption() const;
 
@@ -96,10 +113,16 @@ private:
     RunOptions opt_;
     long long every_;
     long long streak_ = 0, last_hits_ = 0;
+    long long keep_every_;
     long long last_scan_ = 0;  ///< step of the last scan
+    long long since_keep_ = 0; ///< quick scans since the last full one
     std::vector<SolidOutside> outside_;
     std::vector<std::string> warnings_;
 };
+
+/// Periodic scans per kept state: `requested` (-blowupkeep:K) when above 0, else one per 2^18
+/// particles of the case, at least 1.
+long long resolveKeepEvery(long long requested, std::size_t particles);
 
 /// "quantity at t = ... s (step N): message; particles ...; likely cause: ..." for the log.
 std::string describeBlowup(const BlowupDiagnosis& d);

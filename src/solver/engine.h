@@ -245,6 +245,18 @@ public:
         settleDivide();
         return nfluid_;
     }
+    std::uint32_t notFiniteCount() override {
+        noForcesAhead("notFiniteCount");
+        const std::uint32_t n = std::uint32_t(p_.pos.size());
+        if (n == 0) return 0;
+        return exec_.reduce(0u, n, 0u, NotFiniteCountPass{p_.pos.data(), p_.velrho.data(), p_.excl.data()},
+                            CountCombine{});
+    }
+    void downloadSolidPositions(std::vector<physics::Double3>& out) override {
+        noForcesAhead("downloadSolidPositions");
+        out.clear();
+        if (solid_.n > 0) copyToHost(solid_.pos, out);
+    }
     void synchronize() override { exec_.synchronize(); }
 
     void download(HostState& out) override {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "physics/blowup_bounds.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_pair_terms.h"
 #include "physics/gauges.h"
@@ -145,6 +146,17 @@ struct VerletPass {
 };
 
 // ---- around the pair loops: pressure, SPS stress, dt maxima ------------------------------
+
+/// Value pass of the blow-up scan's count (combined with CountCombine): 1 for a particle
+/// physics::particleNotFinite rejects.
+struct NotFiniteCountPass {
+    const physics::Double3* pos;
+    const physics::Float4* velrho;
+    const std::uint8_t* excl;
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const {
+        return physics::particleNotFinite(pos[i], velrho[i], excl[i]) ? 1u : 0u;
+    }
+};
 
 struct PressurePass {
     physics::ParticleView v;

@@ -103,6 +103,7 @@ void declareOptions(CLI::App& app) {
     value("--dirdataout");
     value("--nsteps");
     value("--blowupcheck");
+    value("--blowupkeep");
     flag("--overwrite");
     value("--checkpoint");
     CLI::Option* restart = value("--restart");
@@ -234,6 +235,8 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             o.nsteps = toInteger(g, 0, LLONG_MAX);
         } else if (name == "blowupcheck") {
             o.blowup_check_every = toInteger(g, 0, LLONG_MAX);
+        } else if (name == "blowupkeep") {
+            o.blowup_keep_every = toInteger(g, 0, LLONG_MAX);
         } else if (name == "overwrite") {
             o.overwrite = true;
         } else if (name == "checkpoint") {
@@ -364,6 +367,10 @@ Run control:
                        100; 0: only at output times). Fluid loss (MinFluidStop), dt
                        stuck at DtMin and VCPM solids (non-finite, bond strain past 1,
                        speed past 10 max(c_S, c0)) are checked within every step
+  -blowupkeep:K        download the state at every K-th of those scans and keep it as the
+                       last good state, written if a later check fails (default 0: one
+                       scan in ceil(particles / 262144)); the others count non-finite
+                       particles on the device
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
                        files in OUTDIR/vtk), none; DualSPHysics' binx is taken as h5 and
                        info as run.json (a note each)

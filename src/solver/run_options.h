@@ -48,6 +48,9 @@ struct RunOptions {
     /// -blowupcheck:N: scan the whole state for a blow-up every N steps (0: only at outputs);
     /// blowup_check.h.
     long long blowup_check_every = 100;
+    /// -blowupkeep:K: download the state and keep it as the last good one at every K-th periodic
+    /// scan (the others count non-finite particles on the backend); 0 (auto): resolveKeepEvery.
+    long long blowup_keep_every = 0;
     bool overwrite = false;  ///< -overwrite: clear an earlier run's files from OUTDIR (output_dir.h)
     /// -checkpoint:T: write OUTDIR/restart.h5 every T > 0 of simulated time (checkpoint.h);
     /// a stop signal or a TERMINATE file in OUTDIR writes one too. 0: only those.

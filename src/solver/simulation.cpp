@@ -283,6 +283,15 @@ bool Simulation::checkStep(double t, long long step, double dt, std::uint32_t ac
     // (it names the particles and the option; a state that passes it goes on).
     const bool solid_alarm = !setup_.solid.empty() && backend_->solidsPastBounds() > 0;
     if (output_due || (!solid_alarm && !h.check.scanDue(step))) return true;
+    // A quick scan (blowup_check.h): the backend counts the non-finite particles; only a count
+    // above zero, a solid alarm or a kept scan brings the whole state to the host.
+    if (!solid_alarm && !h.check.keepDue() && !backend_->forcesAhead() && backend_->notFiniteCount() == 0) {
+        backend_->downloadSolidPositions(h.solid_pos);
+        h.check.quickScan(h.solid_pos, t, step);
+        for (const std::string& w : h.check.takeWarnings()) log_ << w << "\n";
+        sum_.solids_outside = h.check.solidsOutside();
+        return true;
+    }
     backend_->download(h.scan);
     return healthy(h.scan, t, step);
 }

@@ -108,8 +108,9 @@ private:
     /// with it: `st` is left holding the previous one).
     bool healthy(HostState& st, double time, long long step);
     /// The blow-up checks after a step (blowup_check.h): the per-step ones, then a scan of the
-    /// state every -blowupcheck steps unless an output (which scans) is due; they only read the
-    /// state. Returns false when the run blew up.
+    /// state every -blowupcheck steps unless an output (which scans) is due (a quick scan on the
+    /// backend but at every -blowupkeep-th); they only read the state. Returns false when the
+    /// run blew up.
     bool checkStep(double t, long long step, double dt, std::uint32_t active, long long dtmin_hits, bool output_due);
     /// A step whose dt was not finite (NonFiniteStep's message).
     void stepFailed(double t, long long step, const std::string& what);

@@ -30,6 +30,7 @@ struct Simulation::Health {
     /// What scans and outputs download into: a good state is swapped with last_good, so the
     /// next download reuses the older one's memory (no copy, no allocation).
     HostState scan;
+    std::vector<physics::Double3> solid_pos;  ///< a quick scan's solid positions (solid order)
     double good_time = -1;    ///< its time (-1: none yet)
     long long good_step = 0;
     double written_time = -1; ///< time of the last output written

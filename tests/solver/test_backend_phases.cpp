@@ -11,11 +11,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "solver/blowup_check.h"
 #include "solver/gauge_system.h"
 #include "solver/motion_player.h"
 #include "solver_test_util.h"
@@ -306,6 +308,62 @@ TYPED_TEST(BackendPhases, SolidSubStepsCouplingAndBoundaryForces) {
 
 TYPED_TEST(BackendPhases, SolidSubStepsCouplingMdbc) {
     plateCoupledSteps<TypeParam>("phases_plate_mdbc", "hydrostatic_plate_mdbc/HydrostaticPlateMdbc_Def.xml");
+}
+
+// The blow-up scan's quick form (solver/blowup_check.h): the backend's count of particles that
+// physics::particleNotFinite rejects, against the host's scan of the downloaded state, on a state
+// with a non-finite position, velocity, density and a fluid particle excluded as not finite; and
+// the solid positions a quick scan downloads.
+TYPED_TEST(BackendPhases, NotFiniteCountAndSolidPositionsForTheQuickScan) {
+    const std::string dir = test::scratch("phases_notfinite");
+    const std::string kase = test::generateCaseFile(dir, "plate", test::caseDef("hydrostatic_plate/HydrostaticPlate_Def.xml"), 0.025);
+    Pair<TypeParam> p(kase, 0);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    const solver::SolidSetup& so = p.setup.solid;
+    ASSERT_GT(so.nsolid, 0u);
+    p.both([&](Backend& b) {
+        b.divide(false);
+        b.computeForces();
+        b.symplecticPredictor(2e-4);
+        b.divide(true);
+    });
+    EXPECT_EQ(p.ref->notFiniteCount(), 0u);
+    EXPECT_EQ(p.b->notFiniteCount(), 0u);
+    solver::HostState x;
+    p.ref->download(x);
+    std::vector<physics::Double3> sref, sb;
+    p.ref->downloadSolidPositions(sref);
+    p.b->downloadSolidPositions(sb);
+    ASSERT_EQ(sref.size(), std::size_t(so.nsolid));
+    EXPECT_TRUE(sameBytes(sref, sb));
+    for (std::uint32_t r = 0; r < so.nsolid; ++r)  // the positions the full scan reads (id order)
+        ASSERT_EQ(std::memcmp(&sref[r], &x.pos[so.first_solid + r], sizeof(physics::Double3)), 0) << r;
+
+    CheckpointData cp;
+    p.ref->saveState(cp);
+    auto pos = cp.getArray<physics::Double3>("engine/field/pos");
+    auto velrho = cp.getArray<physics::Float4>("engine/field/velrho");
+    auto excl = cp.getArray<std::uint8_t>("engine/field/excl");
+    const std::size_t np = pos.size();
+    ASSERT_GT(np, 400u);
+    pos[3].y = NAN;
+    velrho[50].w = INFINITY;
+    velrho[100].x = -INFINITY;
+    excl[np - 1] = physics::kExcludedNotFinite;
+    cp.putArray("engine/field/pos", pos);
+    cp.putArray("engine/field/velrho", velrho);
+    cp.putArray("engine/field/excl", excl);
+    p.both([&](Backend& b) { b.loadState(cp); });
+    EXPECT_EQ(p.ref->notFiniteCount(), 4u);
+    EXPECT_EQ(p.b->notFiniteCount(), 4u);
+    // The host's scan of the same state finds the same particles.
+    solver::RunOptions o;
+    solver::BlowupCheck check(p.kase, p.setup, o);
+    p.b->download(x);
+    const std::optional<solver::BlowupDiagnosis> d = check.scan(x, 0.0, 1, 2e-4);
+    ASSERT_TRUE(d.has_value());
+    EXPECT_EQ(d->quantity, "non-finite state");
+    EXPECT_EQ(d->count, 4u);
 }
 
 // Contact of VCPM solids (physics/solid_contact.h): two blocks on a floor, solid-wall and

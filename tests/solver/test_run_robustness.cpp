@@ -121,6 +121,27 @@ TEST(RunRobustness, SolidBlowupBlamesVcpmSubsteps) {
     EXPECT_GT(output_times[1], 0.0);
     EXPECT_LT(output_times[1], d.time);
     EXPECT_EQ(every.summary.last_good_time, output_times[1]);
+    // Kept at every K-th scan only (-blowupkeep:K; the others are quick scans, counted on the
+    // backend): the same step stops the run, and the last good state is the last kept one, the
+    // scan at the largest multiple of K before the failing step (none: the t = 0 output).
+    for (const long long keep : {2LL, 3LL}) {
+        std::vector<long long> steps;
+        const test::SolverRun k = test::runCpu(
+            kase, dir + "/keep" + std::to_string(keep), 2,
+            [keep](solver::RunOptions& o) {
+                o.solid_substeps = 1;
+                o.blowup_check_every = 1;
+                o.blowup_keep_every = keep;
+                o.tmax = 0.01;
+            },
+            [&](double, long long s, const solver::HostState&) { steps.push_back(s); });
+        ASSERT_TRUE(k.summary.blowup.has_value()) << keep;
+        EXPECT_EQ(k.summary.blowup->step, d.step) << keep;
+        EXPECT_EQ(k.summary.blowup->quantity, d.quantity) << keep;
+        const long long kept = ((d.step - 1) / keep) * keep;
+        ASSERT_EQ(steps.size(), kept > 0 ? 2u : 1u) << keep;
+        EXPECT_EQ(steps.back(), kept) << keep;
+    }
 }
 
 TEST(RunRobustness, SolidLeavingTheDomainIsFrozenAndCountedPerBody) {
@@ -132,9 +153,11 @@ TEST(RunRobustness, SolidLeavingTheDomainIsFrozenAndCountedPerBody) {
     // 1 m further down.
     const std::string kase = beam(dir, "Fall", "mkclamp=\"0\" density=\"2500\" youngmod=\"3e6\" poissratio=\"0.3\" damping=\"1\"",
                                   "density=\"2500\" youngmod=\"3e5\" poissratio=\"0.3\"");
+    // Outputs only at 0 and 0.5 s: the periodic scans (every 100 steps, each a full scan of the
+    // downloaded state at this size) find the particles outside.
     const test::SolverRun r = test::runCpu(kase, dir + "/out", 2, [](solver::RunOptions& o) {
         o.tmax = 0.5;
-        o.tout = 0.1;
+        o.tout = 0.5;
     });
     EXPECT_FALSE(r.summary.blowup.has_value());
     ASSERT_EQ(r.summary.solids_outside.size(), 1u);
@@ -143,6 +166,7 @@ TEST(RunRobustness, SolidLeavingTheDomainIsFrozenAndCountedPerBody) {
     EXPECT_EQ(o.particles, 750u);
     EXPECT_EQ(o.outside, 750u);
     EXPECT_GT(o.first_time, 0.15);
+    EXPECT_LT(o.first_time, 0.45);
     const solver::SolverCase& c = r.kase;
     const double floor = c.domain_min.z - 2.0 * c.constants.h;
     const double g = std::fabs(c.constants.gravity.z);
@@ -156,6 +180,18 @@ TEST(RunRobustness, SolidLeavingTheDomainIsFrozenAndCountedPerBody) {
     EXPECT_LT(floor - lowest, g * 0.5 * r.summary.solid_dt) << "lowest " << lowest << ", box floor " << floor;
     EXPECT_GT(floor - lowest, 0.0);
     EXPECT_EQ(r.summary.broken_bonds, c.bonds->bondSlots() / 2);  // no clamp bonds
+    // Quick scans (no state downloaded between outputs, -blowupkeep:1000) count the solids
+    // outside the domain from their positions alone: the same counts, first seen at the same
+    // scan.
+    const test::SolverRun q = test::runCpu(kase, dir + "/quick", 2, [](solver::RunOptions& o) {
+        o.tmax = 0.5;
+        o.tout = 0.5;
+        o.blowup_keep_every = 1000;
+    });
+    ASSERT_EQ(q.summary.solids_outside.size(), 1u);
+    EXPECT_EQ(q.summary.solids_outside[0].outside, o.outside);
+    EXPECT_EQ(q.summary.solids_outside[0].most, o.most);
+    EXPECT_EQ(q.summary.solids_outside[0].first_time, o.first_time);
 }
 
 // The hydrostatic plate is the floor of its tank, so its lowest row is the edge of the default

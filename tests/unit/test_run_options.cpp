@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "solver/blowup_check.h"
 #include "solver/run_options.h"
 
 using namespace seaspring;
@@ -277,6 +278,7 @@ TEST(RunOptions, ValuesMustLieInRange) {
     // 100000 threads crashed libgomp (SIGSEGV) before the run started.
     expectError({"-threads:100000"}, "-threads:100000: 100000 must be 1..1024");
     expectError({"-blowupcheck:-1"}, "-blowupcheck:-1: -1 must be >= 0");
+    expectError({"-blowupkeep:-2"}, "-blowupkeep:-2: -2 must be >= 0");
     expectError({"-overwrite:1"}, "-overwrite:1: -overwrite takes no value");
     expectError({"-gpu:-1"}, "-gpu:-1: -1 must be >= 0");
     expectError({"-ddt:4"},
@@ -333,6 +335,7 @@ TEST(RunOptions, HelpListsEveryOption) {
                           "-dtfixed:DT",
                           "-overwrite",
                           "-blowupcheck:N",
+                          "-blowupkeep:K",
                           "--help",
                           "-version",
                           "OUTDIR/NAME OUTDIR"})
@@ -363,6 +366,7 @@ TEST(RunOptions, HelpListsEveryOption) {
                           "-dtfixed:1",
                           "-overwrite",
                           "-blowupcheck:10",
+                          "-blowupkeep:3",
                           "-threads:1024"})
         EXPECT_EQ(errorOf({a}), "") << a;
 }
@@ -371,9 +375,17 @@ TEST(RunOptions, OverwriteAndBlowupCheck) {
     const RunOptions d = parseWith({});
     EXPECT_FALSE(d.overwrite);
     EXPECT_EQ(d.blowup_check_every, 100);
-    const RunOptions o = parseWith({"-overwrite", "-blowupcheck:1"});
+    EXPECT_EQ(d.blowup_keep_every, 0);
+    const RunOptions o = parseWith({"-overwrite", "-blowupcheck:1", "-blowupkeep:7"});
     EXPECT_TRUE(o.overwrite);
     EXPECT_EQ(o.blowup_check_every, 1);
+    EXPECT_EQ(o.blowup_keep_every, 7);
+    // Auto: one kept scan per 2^18 particles of the case.
+    EXPECT_EQ(solver::resolveKeepEvery(0, 17384), 1);
+    EXPECT_EQ(solver::resolveKeepEvery(0, 262144), 1);
+    EXPECT_EQ(solver::resolveKeepEvery(0, 262145), 2);
+    EXPECT_EQ(solver::resolveKeepEvery(0, 2633654), 11);
+    EXPECT_EQ(solver::resolveKeepEvery(5, 2633654), 5);
 }
 
 TEST(RunOptions, ApplyOverridesLeavesUnsetParametersAlone) {
