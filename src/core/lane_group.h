@@ -1,7 +1,9 @@
 // SeaSpring — MIT licence.
 /// \file lane_group.h
-/// \brief A value combined across a group of consecutive GPU threads (the pair lanes of one
-///        particle, physics/fluid_interaction.h), in a fixed tree: no physics, only the order.
+/// \brief Values exchanged across a group of consecutive GPU threads: combined in a fixed tree
+///        (the pair lanes of one fluid particle, physics/fluid_interaction.h) or taken from one
+///        thread (the bond lanes of one solid particle, physics/vcpm_substep.h). No physics,
+///        only the order.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +12,14 @@
 #include "core/host_device.h"
 
 namespace seaspring {
+
+/// The mask of the caller's aligned group of `lanes` consecutive threads in its warp (GPU).
+#if defined(__CUDA_ARCH__)
+__device__ inline unsigned laneGroupMask(std::uint32_t lanes) {
+    const unsigned me = threadIdx.x & 31u;
+    return lanes >= 32u ? 0xffffffffu : ((1u << lanes) - 1u) << (me & ~(lanes - 1u));
+}
+#endif
 
 /// On the GPU: the threads of each aligned group of `lanes` consecutive threads of a warp (lanes a
 /// power of two <= 32; every thread of the group calls this) combine their values `v` pairwise:
@@ -24,7 +34,7 @@ SEASPRING_HD inline T combineAcrossLanes(T v, std::uint32_t lanes, const C& comb
     static_assert(sizeof(T) % sizeof(unsigned) == 0, "a lane value is a whole number of 32-bit words");
     constexpr int kWords = int(sizeof(T) / sizeof(unsigned));
     const unsigned me = threadIdx.x & 31u;
-    const unsigned mask = lanes >= 32u ? 0xffffffffu : ((1u << lanes) - 1u) << (me & ~(lanes - 1u));
+    const unsigned mask = laneGroupMask(lanes);
     for (unsigned w = 1; w < lanes; w <<= 1) {
         unsigned words[kWords];
         std::memcpy(words, &v, sizeof(T));
@@ -38,6 +48,39 @@ SEASPRING_HD inline T combineAcrossLanes(T v, std::uint32_t lanes, const C& comb
     (void)combine;
 #endif
     return v;
+}
+
+/// On the GPU: thread `src`'s value `v` (0 <= src < lanes; the threads numbered in the caller's
+/// aligned group of `lanes` consecutive threads of a warp, lanes a power of two <= 32; every
+/// thread of the group calls this, with the same src). On the host: v (lanes must be 1).
+template <class T>
+SEASPRING_HD inline T valueOfLane(T v, std::uint32_t src, std::uint32_t lanes) {
+#if defined(__CUDA_ARCH__)
+    static_assert(sizeof(T) % sizeof(unsigned) == 0, "a lane value is a whole number of 32-bit words");
+    constexpr int kWords = int(sizeof(T) / sizeof(unsigned));
+    if (lanes == 1u) return v;
+    const unsigned mask = laneGroupMask(lanes);
+    const int from = int((threadIdx.x & 31u & ~(lanes - 1u)) + src);
+    unsigned words[kWords];
+    std::memcpy(words, &v, sizeof(T));
+    for (int k = 0; k < kWords; ++k) words[k] = __shfl_sync(mask, words[k], from);
+    std::memcpy(&v, words, sizeof(T));
+#else
+    (void)src;
+    (void)lanes;
+#endif
+    return v;
+}
+
+/// The threads of the caller's group of `lanes` wait for each other, and the global-memory
+/// writes of each are seen by the others after it (GPU: __syncwarp on the group's mask; the
+/// host: nothing, lanes must be 1).
+SEASPRING_HD inline void syncLanes(std::uint32_t lanes) {
+#if defined(__CUDA_ARCH__)
+    if (lanes > 1u) __syncwarp(laneGroupMask(lanes));
+#else
+    (void)lanes;
+#endif
 }
 
 }  // namespace seaspring

@@ -3,7 +3,9 @@
 /// \brief The non-template parts of the CUDA execution policy (cuda_exec.cuh).
 #include "cuda/cuda_exec.cuh"
 
+#include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace seaspring::cuda {
 
@@ -27,6 +29,16 @@ std::uint32_t blockMaxFromEnv() {
     const unsigned long v = std::strtoul(env, &end, 10);
     return (*end == '\0') ? std::uint32_t(std::min<unsigned long>(v, 0xffffffffUL)) : kSequenceBlockMaxDefault;
 }
+
+/// log2 of SEASPRING_BOND_LANES (1, 2, 4, 8 or 16) from the environment, else
+/// kBondLaneShiftDefault.
+std::uint32_t bondLaneShiftFromEnv() {
+    const char* env = std::getenv("SEASPRING_BOND_LANES");
+    if (env == nullptr || *env == '\0') return kBondLaneShiftDefault;
+    for (std::uint32_t s = 0; s <= 4; ++s)
+        if (std::strcmp(env, std::to_string(1u << s).c_str()) == 0) return s;
+    return kBondLaneShiftDefault;
+}
 }  // namespace
 
 CudaExec::CudaExec(int device) {
@@ -36,6 +48,7 @@ CudaExec::CudaExec(int device) {
     name_ = prop.name;
     reduce_blocks_ = std::uint32_t(prop.multiProcessorCount) * 4u;
     block_max_ = blockMaxFromEnv();
+    bond_lane_shift_ = bondLaneShiftFromEnv();
     lower_bound_.resize(1);
     reduce_done_.resize(1);
     SEASPRING_CUDA_CHECK(cudaMemset(reduce_done_.data(), 0, sizeof(unsigned)));

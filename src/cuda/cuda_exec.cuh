@@ -171,6 +171,10 @@ __global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(
 /// few percent of the faster path. SEASPRING_SOLID_BLOCK_MAX=N overrides it.
 constexpr std::uint32_t kSequenceBlockMaxDefault = 2048;
 
+/// log2 of the threads per solid particle in the sub-cycle's passes (bond lanes,
+/// physics/vcpm_substep.h). SEASPRING_BOND_LANES=N (1, 2, 4, 8, 16) overrides it.
+constexpr std::uint32_t kBondLaneShiftDefault = 1;
+
 class CudaExec {
 public:
     template <typename T>
@@ -253,6 +257,9 @@ public:
         body(run);
     }
 
+    /// log2 of the bond lanes per solid particle of the sub-cycle (solver::BondLanes).
+    std::uint32_t bondLaneShift() const { return bond_lane_shift_; }
+
     void prepareSort(std::size_t n);
     /// Sorts keys[b, e) ascending carrying perm[b, e) (CUB radix sort, the *_alt arrays as its
     /// second buffers); the result is in keys and perm.
@@ -312,6 +319,7 @@ private:
     };
     std::unique_ptr<void, FreeHost> readback_;  ///< pinned host memory for the readbacks (kReadbackBytes)
     std::uint32_t block_max_ = kSequenceBlockMaxDefault;
+    std::uint32_t bond_lane_shift_ = kBondLaneShiftDefault;
     const std::uint32_t* gate_ = nullptr;  ///< see gate()
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
     DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)

@@ -308,10 +308,50 @@ SEASPRING_HD inline Double3 solidRowForceAt(std::uint32_t s, const SolidBonds& b
     return Double3{fx, fy, fz};
 }
 
+/// What bond slot q of solid particle s adds to S_s in pass 1 (solidSumAt), and the slot's
+/// strain alarm: the slot's breakage is decided here (the partner decides the mirror slot with
+/// the same bits; a bond with an end outside st.keep breaks too). `p`, `out_s`, `crit`: s's
+/// position, whether it lies outside st.keep, its material's critical stretch.
+struct SolidSumTerm {
+    double term;     ///< w dl of an intact bond, +0 for a broken one
+    double strain;   ///< the strain of an intact bond past kMaxBondStrain (when alarm)
+    std::uint32_t alarm;  ///< 1: raise s's strain alarm with `strain`
+    std::uint32_t pad;
+};
+SEASPRING_HD inline SolidSumTerm solidSumSlot(std::uint32_t s, int q, const Double3& p, bool out_s, double crit,
+                                              const Double3* ep, const SolidState& st, const SolidBonds& b,
+                                              const ClampNodes& cn, double f) {
+    const std::uint32_t k = std::uint32_t(q) * b.n + s;
+    const std::uint32_t j = b.partner[k];
+    const Double3 pj = (b.flags[k] & kBondClamp) ? clampPosAt(cn, j, f) : ep[j];
+    double dx, dy, dz;
+    const double len = bondVector(p, pj, dx, dy, dz);
+    const double rest = b.rest[k];
+    std::uint8_t br = b.broken[k];
+    if (!br && (bondBreaks(len, rest, crit) || out_s || solidOutside(st.keep, pj))) {
+        br = 1;
+        b.broken[k] = 1;
+    }
+    SolidSumTerm u{0.0, 0.0, 0u, 0u};
+    if (!br && bondPastBound(len, rest)) {
+        u.alarm = 1u;
+        u.strain = bondStrain(len, rest);
+    }
+    const double dl = halfElongation(len, rest);
+    u.term = br ? 0.0 : (b.vw ? b.vw[k] * dl : dl);
+    return u;
+}
+
+/// Folds slot q's term into S (in slot order): its strain alarm first, at time t.
+SEASPRING_HD inline void addSumTerm(const SolidSumTerm& u, std::uint32_t s, const SolidState& st, double t,
+                                    double& sum) {
+    if (u.alarm) raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, u.strain, t);
+    sum += u.term;
+}
+
 /// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
-/// its bonds (the partner decides the mirror slot with the same bits; a bond with an end
-/// outside st.keep breaks too) and returns S_s = sum of dl over its intact bonds; with the
-/// rows' bending, writes s's row curvatures (solidRowCurvaturesAt). `f`: time
+/// its bonds (solidSumSlot) and returns S_s = sum of (w) dl over its intact bonds in slot
+/// order; with the rows' bending, writes s's row curvatures (solidRowCurvaturesAt). `f`: time
 /// fraction for the clamp nodes. Raises s's alarm for a position that is not finite or an
 /// intact bond strained past kMaxBondStrain.
 SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st,
@@ -323,22 +363,7 @@ SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const 
     if (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)) raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
     const int nb = b.count[s];
     double sum = 0.0;
-    for (int q = 0; q < nb; ++q) {
-        const std::uint32_t k = std::uint32_t(q) * b.n + s;
-        const std::uint32_t j = b.partner[k];
-        const Double3 pj = (b.flags[k] & kBondClamp) ? clampPosAt(cn, j, f) : ep[j];
-        double dx, dy, dz;
-        const double len = bondVector(p, pj, dx, dy, dz);
-        const double rest = b.rest[k];
-        std::uint8_t br = b.broken[k];
-        if (!br && (bondBreaks(len, rest, crit) || out_s || solidOutside(st.keep, pj))) {
-            br = 1;
-            b.broken[k] = 1;
-        }
-        if (!br && bondPastBound(len, rest)) raiseSolidAlarm(st.alarm, s, kSolidAlarmStrain, bondStrain(len, rest), t);
-        const double dl = halfElongation(len, rest);
-        sum += br ? 0.0 : (b.vw ? b.vw[k] * dl : dl);
-    }
+    for (int q = 0; q < nb; ++q) addSumTerm(solidSumSlot(s, q, p, out_s, crit, ep, st, b, cn, f), s, st, t, sum);
     if (b.row_d) solidRowCurvaturesAt(s, ep, b, cn, f);
     return sum;
 }
@@ -369,31 +394,42 @@ SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const 
     return sum;
 }
 
-/// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12), from the
-/// sums of pass 1, plus the rows' bending force from its row curvatures (vcpm_rows.h).
-SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
-                                             const SolidBonds& b, const ClampNodes& cn, double f) {
-    const Double3 p = ep[s];
-    const VcpmMaterial& m = st.material[st.body[s]];
-    const double sum_s = st.sum[s];
-    const int nb = b.count[s];
-    double fx = 0.0, fy = 0.0, fz = 0.0;
-    for (int q = 0; q < nb; ++q) {
-        const std::uint32_t k = std::uint32_t(q) * b.n + s;
-        if (b.broken[k]) continue;
-        const std::uint32_t j = b.partner[k];
-        const bool clamp = (b.flags[k] & kBondClamp) != 0;
-        const Double3 pj = clamp ? clampPosAt(cn, j, f) : ep[j];
-        const double sum_j = clamp ? cn.sum[j] : st.sum[j];
-        double dx, dy, dz;
-        const double len = bondVector(p, pj, dx, dy, dz);
-        const double kb = b.kfac ? bondStiffness(m, b.flags[k]) * b.kfac[k] : bondStiffness(m, b.flags[k]);
-        const double si = b.vw ? b.vw[k] * sum_s : sum_s, sj = b.vw ? b.vw_partner[k] * sum_j : sum_j;
-        const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), si, sj) / len;
-        fx += fm * dx;
-        fy += fm * dy;
-        fz += fm * dz;
-    }
+/// The force of bond slot q on solid particle s at positions `ep` (Eq. 12) from the sums of
+/// pass 1; `on` false for a broken bond (nothing is added). `p`, `m`, `sum_s`: s's position,
+/// material and S.
+struct SolidForceTerm {
+    double x, y, z;
+    std::uint32_t on;
+    std::uint32_t pad;
+};
+SEASPRING_HD inline SolidForceTerm solidBondForceSlot(std::uint32_t s, int q, const Double3& p, const VcpmMaterial& m,
+                                                      double sum_s, const Double3* ep, const SolidState& st,
+                                                      const SolidBonds& b, const ClampNodes& cn, double f) {
+    const std::uint32_t k = std::uint32_t(q) * b.n + s;
+    if (b.broken[k]) return SolidForceTerm{0.0, 0.0, 0.0, 0u, 0u};
+    const std::uint32_t j = b.partner[k];
+    const bool clamp = (b.flags[k] & kBondClamp) != 0;
+    const Double3 pj = clamp ? clampPosAt(cn, j, f) : ep[j];
+    const double sum_j = clamp ? cn.sum[j] : st.sum[j];
+    double dx, dy, dz;
+    const double len = bondVector(p, pj, dx, dy, dz);
+    const double kb = b.kfac ? bondStiffness(m, b.flags[k]) * b.kfac[k] : bondStiffness(m, b.flags[k]);
+    const double si = b.vw ? b.vw[k] * sum_s : sum_s, sj = b.vw ? b.vw_partner[k] * sum_j : sum_j;
+    const double fm = bondForce(kb, m.t_half, halfElongation(len, b.rest[k]), si, sj) / len;
+    return SolidForceTerm{fm * dx, fm * dy, fm * dz, 1u, 0u};
+}
+
+/// Folds slot q's force into (fx, fy, fz), in slot order.
+SEASPRING_HD inline void addForceTerm(const SolidForceTerm& u, double& fx, double& fy, double& fz) {
+    if (!u.on) return;
+    fx += u.x;
+    fy += u.y;
+    fz += u.z;
+}
+
+/// The rows' bending force of s added to a bond force (vcpm_rows.h; nothing without it).
+SEASPRING_HD inline Double3 withRowForce(std::uint32_t s, const SolidBonds& b, const VcpmMaterial& m, double fx,
+                                         double fy, double fz) {
     if (b.row_d) {
         const Double3 fr = solidRowForceAt(s, b, m.row_k);
         fx += fr.x;
@@ -403,73 +439,18 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
     return Double3{fx, fy, fz};
 }
 
-/// Acceleration of a solid particle: (bond force + hydrodynamic force)/m + g - c_d v.
-SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double3& ffluid, const Double3& vel,
-                                              const VcpmMaterial& m, double gx, double gy, double gz) {
-    return Double3{(fbond.x + ffluid.x) * m.inv_mass + gx - m.damp_rate * vel.x,
-                   (fbond.y + ffluid.y) * m.inv_mass + gy - m.damp_rate * vel.y,
-                   (fbond.z + ffluid.z) * m.inv_mass + gz - m.damp_rate * vel.z};
-}
-
-/// Predictor pass of a sub-step (Eqs. 20-21) for particle s: a^m at r^m, then
-/// v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m. A frozen particle (outside
-/// st.keep) stays where it is, at rest.
-SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
-                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
-                                          double gz) {
-    if (solidOutside(st.keep, st.pos[s])) {
-        const Double3 rest{0, 0, 0};
-        st.vel0[s] = rest;
-        st.vel[s] = rest;
-        st.pos_half[s] = st.pos[s];
-        return;
-    }
-    const Double3 fi = solidBondForceAt(s, st.pos, st, b, cn, f), fl = pointLoadAt(st, s, f);
-    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
-    if (st.contact_force) {
-        const Double3 fc = st.contact_force[s];
-        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
-    }
-    const Double3 v = st.vel[s], p = st.pos[s];
-    const Double3 a = solidAcceleration(fb, st.fluid_force[s], v, st.material[st.body[s]], gx, gy, gz);
-    const double dth = 0.5 * dt;
-    st.vel0[s] = v;
-    st.vel[s] = Double3{v.x + dth * a.x, v.y + dth * a.y, v.z + dth * a.z};
-    st.pos_half[s] = Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
-}
-
-/// Corrector pass (Eqs. 22-23): a^{m+1/2} at r^{m+1/2} (damping with v^{m+1/2}; bond, load,
-/// hydrodynamic and contact forces), then
-/// v^{m+1} = v^m + dt a^{m+1/2} and r^{m+1} = r^m + dt/2 (v^m + v^{m+1}). A particle outside
-/// st.keep (frozen at the predictor) stays; one that r^{m+1} takes outside freezes there.
-/// Raises s's alarm for a velocity that is not finite or faster than the material's max_speed.
-SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
-                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
-                                          double gz) {
-    if (solidOutside(st.keep, st.pos[s])) return;
-    const Double3 fi = solidBondForceAt(s, st.pos_half, st, b, cn, f), fl = pointLoadAt(st, s, f);
-    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
-    if (st.contact_force) {
-        const Double3 fc = st.contact_force[s];
-        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
-    }
-    const Double3 a = solidAcceleration(fb, st.fluid_force[s], st.vel[s], st.material[st.body[s]], gx, gy, gz);
-    const Double3 v0 = st.vel0[s], p0 = st.pos[s];
-    const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};
-    const double dth = 0.5 * dt;
-    const Double3 p{p0.x + dth * (v0.x + v.x), p0.y + dth * (v0.y + v.y), p0.z + dth * (v0.z + v.z)};
-    const double t = st.t0 + f * st.span;
-    if (notFinite(v.x) || notFinite(v.y) || notFinite(v.z))
-        raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, v.x + v.y + v.z, t);
-    else if (speedPastBound(v.x, v.y, v.z, st.material[st.body[s]].max_speed))
-        raiseSolidAlarm(st.alarm, s, kSolidAlarmSpeed, speedOf(v), t);
-    if (st.contact_force) {  // the ledger: impulse F dt and work F . (r^{m+1} - r^m) of the contact force
-        const Double3 fc = st.contact_force[s], j = st.contact_impulse[s];
-        st.contact_impulse[s] = Double3{j.x + fc.x * dt, j.y + fc.y * dt, j.z + fc.z * dt};
-        st.contact_work[s] += fc.x * (p.x - p0.x) + fc.y * (p.y - p0.y) + fc.z * (p.z - p0.z);
-    }
-    st.vel[s] = solidOutside(st.keep, p) ? Double3{0, 0, 0} : v;
-    st.pos[s] = p;
+/// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12), from the
+/// sums of pass 1 (solidBondForceSlot in slot order), plus the rows' bending force from its
+/// row curvatures (vcpm_rows.h).
+SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
+                                             const SolidBonds& b, const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const VcpmMaterial& m = st.material[st.body[s]];
+    const double sum_s = st.sum[s];
+    const int nb = b.count[s];
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    for (int q = 0; q < nb; ++q) addForceTerm(solidBondForceSlot(s, q, p, m, sum_s, ep, st, b, cn, f), fx, fy, fz);
+    return withRowForce(s, b, m, fx, fy, fz);
 }
 
 /// After a sub-cycle, for solid particle s: raises its alarm for an intact bond strained past

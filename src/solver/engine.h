@@ -522,9 +522,11 @@ private:
             cm.motions = solid_motions_.data();
         }
         const SubCycleContact ct = subCycleContact();
+        const BondLanes bl{exec_.bondLaneShift()};
         const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
-                                 setup_.step.gx, setup_.step.gy, setup_.step.gz, ct};
-        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, solid_.n + solid_.nclamp, body);  // widest: the sums
+                                 setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, bl};
+        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, (solid_.n << bl.shift) + solid_.nclamp,
+                       body);  // widest: the sums
     }
 
     /// The contact views of the solids' sub-cycle (off without contact).

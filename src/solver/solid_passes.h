@@ -5,7 +5,8 @@
 ///
 /// A sub-step is four passes (sums at r^m, predictor, sums at r^{m+1/2}, corrector; the sums
 /// pass also takes the clamp nodes' sums and, with contact, the contact force), each needing
-/// the previous one complete. SolidSubCycle writes that sequence
+/// the previous one complete. On the GPU a particle's bond slots are spread over several
+/// threads ("bond lanes", physics/vcpm_substep.h: the same bits). SolidSubCycle writes that sequence
 /// once; the execution policy's `sequence` runs it with a runner `run(n, pass)` that runs the
 /// pass for indices [0, n) and returns when all are done: an `omp for` inside one parallel
 /// region (CPU), one grid-wide launch per pass (GPU, large solids), or a block-stride loop and
@@ -20,6 +21,7 @@
 #include "physics/solid_contact.h"
 #include "physics/solid_coupling.h"
 #include "physics/vcpm.h"
+#include "physics/vcpm_substep.h"
 
 namespace seaspring::solver {
 
@@ -46,6 +48,38 @@ struct SolidCorrectorPass {
     physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
     SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidCorrectorAt(s, st, b, cn, f, dt, gx, gy, gz); }
+};
+
+/// Bond lanes (physics/vcpm_substep.h; the GPU's sub-cycle): index k of [0, n << shift) is
+/// lane k mod 2^shift of solid particle k >> shift. A particle's lanes are consecutive threads
+/// of one warp (every runner's indices start at 0 and its blocks are whole warps).
+struct BondLanes {
+    std::uint32_t shift = 0;  ///< log2 of the lanes per particle (0: one thread per particle)
+    SEASPRING_HD std::uint32_t lanes() const { return 1u << shift; }
+    SEASPRING_HD std::uint32_t particle(std::uint32_t k) const { return k >> shift; }
+    SEASPRING_HD std::uint32_t lane(std::uint32_t k) const { return k & (lanes() - 1u); }
+};
+
+struct SolidPredictorLanesPass {
+    physics::SolidState st;
+    physics::SolidBonds b;
+    physics::ClampNodes cn;
+    double f, dt, gx, gy, gz;
+    BondLanes bl;
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        physics::solidPredictorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
+    }
+};
+
+struct SolidCorrectorLanesPass {
+    physics::SolidState st;
+    physics::SolidBonds b;
+    physics::ClampNodes cn;
+    double f, dt, gx, gy, gz;
+    BondLanes bl;
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        physics::solidCorrectorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
+    }
 };
 
 struct SolidSlotPass {
@@ -97,6 +131,31 @@ struct SolidSumsPass {
             if (ct.on) ct.force[i] = physics::contactForceAt(i, ep, st, ct.w, ct.cp, ct.cl);
         } else {
             cn.sum[i - b.n] = physics::clampSumAt(i - b.n, ep, st, b, cn, f);
+        }
+    }
+};
+
+/// SolidSumsPass with bond lanes: indices [0, b.n << shift) the solid particles' lanes
+/// (physics::solidSumLanes; lane 0 writes S and the contact force), then one index per clamp
+/// node.
+struct SolidSumsLanesPass {
+    const physics::Double3* ep;
+    physics::SolidState st;
+    physics::SolidBonds b;
+    physics::ClampNodes cn;
+    double f;
+    SubCycleContact ct;
+    BondLanes bl;
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        const std::uint32_t nl = b.n << bl.shift;
+        if (k < nl) {
+            const std::uint32_t i = bl.particle(k), lane = bl.lane(k);
+            const double sum = physics::solidSumLanes(i, lane, bl.lanes(), ep, st, b, cn, f);
+            if (lane != 0u) return;
+            st.sum[i] = sum;
+            if (ct.on) ct.force[i] = physics::contactForceAt(i, ep, st, ct.w, ct.cp, ct.cl);
+        } else {
+            cn.sum[k - nl] = physics::clampSumAt(k - nl, ep, st, b, cn, f);
         }
     }
 };
@@ -158,6 +217,7 @@ struct SolidSubCycle {
     int n;
     double dt, gx, gy, gz;
     SubCycleContact ct;
+    BondLanes bl;  ///< shift 0: one thread per particle (the host); else the lanes passes
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
@@ -167,12 +227,20 @@ struct SolidSubCycle {
         run(cn.n + (ct.on ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct});
         const double inv_n = 1.0 / double(n);
         const std::uint32_t nsums = b.n + cn.n;
+        const std::uint32_t nl = b.n << bl.shift;
         for (int m = 0; m < n; ++m) {
             const double f0 = double(m) * inv_n, fh = (double(m) + 0.5) * inv_n;
-            run(nsums, SolidSumsPass{st.pos, st, b, cn, f0, ct});
-            run(b.n, SolidPredictorPass{st, b, cn, f0, dt, gx, gy, gz});
-            run(nsums, SolidSumsPass{st.pos_half, st, b, cn, fh, ct});
-            run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
+            if (bl.shift == 0) {
+                run(nsums, SolidSumsPass{st.pos, st, b, cn, f0, ct});
+                run(b.n, SolidPredictorPass{st, b, cn, f0, dt, gx, gy, gz});
+                run(nsums, SolidSumsPass{st.pos_half, st, b, cn, fh, ct});
+                run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
+            } else {
+                run(nl + cn.n, SolidSumsLanesPass{st.pos, st, b, cn, f0, ct, bl});
+                run(nl, SolidPredictorLanesPass{st, b, cn, f0, dt, gx, gy, gz, bl});
+                run(nl + cn.n, SolidSumsLanesPass{st.pos_half, st, b, cn, fh, ct, bl});
+                run(nl, SolidCorrectorLanesPass{st, b, cn, fh, dt, gx, gy, gz, bl});
+            }
         }
     }
 };

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <memory>
@@ -35,6 +36,18 @@ struct Cpu3 {
 };
 struct Gpu {
     static std::unique_ptr<Backend> make(std::string& why) { return solver::makeCudaBackend(0, why); }
+};
+/// The GPU with 4 and 8 threads per solid particle in the sub-cycle (bond lanes,
+/// physics/vcpm_substep.h; the default is 2): the same bits as the CPU's one thread.
+template <int kLanes>
+struct GpuBondLanes {
+    static std::unique_ptr<Backend> make(std::string& why) {
+        const std::string lanes = std::to_string(kLanes);
+        setenv("SEASPRING_BOND_LANES", lanes.c_str(), 1);
+        std::unique_ptr<Backend> b = solver::makeCudaBackend(0, why);
+        unsetenv("SEASPRING_BOND_LANES");
+        return b;
+    }
 };
 
 template <typename T>
@@ -137,7 +150,7 @@ protected:
     }
 };
 
-using Kinds = ::testing::Types<Cpu2, Cpu3, Gpu>;
+using Kinds = ::testing::Types<Cpu2, Cpu3, Gpu, GpuBondLanes<4>, GpuBondLanes<8>>;
 TYPED_TEST_SUITE(BackendPhases, Kinds);
 
 /// A 2D tank with a moving piston (tests/solver/test_solver_parity.cpp's case).

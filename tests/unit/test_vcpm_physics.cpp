@@ -24,6 +24,7 @@
 #include "core/vec3.h"
 #include "gencase/vcpm_bonds.h"
 #include "physics/vcpm.h"
+#include "physics/vcpm_substep.h"
 #include "unit/vcpm_block.h"
 
 using namespace seaspring::physics;

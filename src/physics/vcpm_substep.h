@@ -1,0 +1,185 @@
+// SeaSpring — MIT licence.
+/// \file vcpm_substep.h
+/// \brief The symplectic sub-step of a VCPM solid (seed paper 000 Eqs. 20-23): a particle's
+///        acceleration, predictor and corrector, one thread per particle (the host) or with the
+///        particle's bond slots on several GPU threads ("bond lanes", the same bits). The lattice
+///        (bonds, sums S, bond forces, breakage) is vcpm.h.
+#pragma once
+
+#include <cstdint>
+
+#include "core/host_device.h"
+#include "core/lane_group.h"
+#include "physics/blowup_bounds.h"
+#include "physics/sph_types.h"
+#include "physics/vcpm.h"
+
+namespace seaspring::physics {
+
+/// Acceleration of a solid particle: (bond force + hydrodynamic force)/m + g - c_d v.
+SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double3& ffluid, const Double3& vel,
+                                              const VcpmMaterial& m, double gx, double gy, double gz) {
+    return Double3{(fbond.x + ffluid.x) * m.inv_mass + gx - m.damp_rate * vel.x,
+                   (fbond.y + ffluid.y) * m.inv_mass + gy - m.damp_rate * vel.y,
+                   (fbond.z + ffluid.z) * m.inv_mass + gz - m.damp_rate * vel.z};
+}
+
+/// Predictor of a sub-step (Eqs. 20-21) for particle s, given its bond force `fi` at r^m
+/// (solidBondForceAt): a^m, then v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
+SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
+                                            double gy, double gz, const Double3& fi) {
+    const Double3 fl = pointLoadAt(st, s, f);
+    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
+    if (st.contact_force) {
+        const Double3 fc = st.contact_force[s];
+        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
+    }
+    const Double3 v = st.vel[s], p = st.pos[s];
+    const Double3 a = solidAcceleration(fb, st.fluid_force[s], v, st.material[st.body[s]], gx, gy, gz);
+    const double dth = 0.5 * dt;
+    st.vel0[s] = v;
+    st.vel[s] = Double3{v.x + dth * a.x, v.y + dth * a.y, v.z + dth * a.z};
+    st.pos_half[s] = Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
+}
+
+/// A particle outside st.keep at the predictor stays where it is, at rest (true: s is frozen,
+/// its predictor is done).
+SEASPRING_HD inline bool solidFrozenAtPredictor(std::uint32_t s, const SolidState& st) {
+    if (!solidOutside(st.keep, st.pos[s])) return false;
+    const Double3 rest{0, 0, 0};
+    st.vel0[s] = rest;
+    st.vel[s] = rest;
+    st.pos_half[s] = st.pos[s];
+    return true;
+}
+
+/// Predictor pass of a sub-step for particle s (one thread).
+SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
+    if (solidFrozenAtPredictor(s, st)) return;
+    solidPredictorWith(s, st, f, dt, gx, gy, gz, solidBondForceAt(s, st.pos, st, b, cn, f));
+}
+
+/// Corrector (Eqs. 22-23) for particle s, given its bond force `fi` at r^{m+1/2}:
+/// a^{m+1/2} (damping with v^{m+1/2}; bond, load, hydrodynamic and contact forces), then
+/// v^{m+1} = v^m + dt a^{m+1/2} and r^{m+1} = r^m + dt/2 (v^m + v^{m+1}); one that r^{m+1}
+/// takes outside st.keep freezes there. Raises s's alarm for a velocity that is not finite or
+/// faster than the material's max_speed.
+SEASPRING_HD inline void solidCorrectorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
+                                            double gy, double gz, const Double3& fi) {
+    const Double3 fl = pointLoadAt(st, s, f);
+    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
+    if (st.contact_force) {
+        const Double3 fc = st.contact_force[s];
+        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
+    }
+    const Double3 a = solidAcceleration(fb, st.fluid_force[s], st.vel[s], st.material[st.body[s]], gx, gy, gz);
+    const Double3 v0 = st.vel0[s], p0 = st.pos[s];
+    const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};
+    const double dth = 0.5 * dt;
+    const Double3 p{p0.x + dth * (v0.x + v.x), p0.y + dth * (v0.y + v.y), p0.z + dth * (v0.z + v.z)};
+    const double t = st.t0 + f * st.span;
+    if (notFinite(v.x) || notFinite(v.y) || notFinite(v.z))
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, v.x + v.y + v.z, t);
+    else if (speedPastBound(v.x, v.y, v.z, st.material[st.body[s]].max_speed))
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmSpeed, speedOf(v), t);
+    if (st.contact_force) {  // the ledger: impulse F dt and work F . (r^{m+1} - r^m) of the contact force
+        const Double3 fc = st.contact_force[s], j = st.contact_impulse[s];
+        st.contact_impulse[s] = Double3{j.x + fc.x * dt, j.y + fc.y * dt, j.z + fc.z * dt};
+        st.contact_work[s] += fc.x * (p.x - p0.x) + fc.y * (p.y - p0.y) + fc.z * (p.z - p0.z);
+    }
+    st.vel[s] = solidOutside(st.keep, p) ? Double3{0, 0, 0} : v;
+    st.pos[s] = p;
+}
+
+/// Corrector pass for particle s (one thread); a particle frozen at the predictor (outside
+/// st.keep) stays.
+SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
+    if (solidOutside(st.keep, st.pos[s])) return;
+    solidCorrectorWith(s, st, f, dt, gx, gy, gz, solidBondForceAt(s, st.pos_half, st, b, cn, f));
+}
+
+// ---- Bond lanes: one particle's bonds on several GPU threads, the same bits -------------------
+//
+// The sub-cycle of a small solid is latency-bound: one thread per particle walks its 8 (2D) or
+// 18 (3D) bond slots one after another, each a chain of dependent loads and double square
+// roots. With `lanes` threads per particle (consecutive, aligned in a warp; lanes a power of two
+// <= 32), lane l evaluates the slots l, l + lanes, l + 2 lanes, ... in lockstep; after each
+// round lane 0 takes the other lanes' terms (valueOfLane) and folds every term in slot order,
+// raising alarms in that order: the same operations in the same order as the one-thread
+// functions above, so the same bits on every backend. Every lane of a group calls these; only
+// lane 0's result is meaningful, and only lane 0 writes the particle's own fields.
+
+/// solidSumAt over `lanes` lanes (lane 0 returns S_s).
+SEASPRING_HD inline double solidSumLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes, const Double3* ep,
+                                         const SolidState& st, const SolidBonds& b, const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const double crit = st.material[st.body[s]].crit_stretch;
+    const bool out_s = solidOutside(st.keep, p);
+    const double t = st.t0 + f * st.span;
+    if (lane == 0 && (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)))
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
+    const int nb = b.count[s];
+    double sum = 0.0;
+    for (int q0 = 0; q0 < nb; q0 += int(lanes)) {
+        const int q = q0 + int(lane);
+        SolidSumTerm u{0.0, 0.0, 0u, 0u};
+        if (q < nb) u = solidSumSlot(s, q, p, out_s, crit, ep, st, b, cn, f);
+        for (std::uint32_t l = 0; l < lanes; ++l) {
+            const SolidSumTerm v = valueOfLane(u, l, lanes);
+            if (lane == 0 && q0 + int(l) < nb) addSumTerm(v, s, st, t, sum);
+        }
+    }
+    if (b.row_d) {
+        syncLanes(lanes);  // the other lanes' breakage decisions, which the row triplets read
+        if (lane == 0) solidRowCurvaturesAt(s, ep, b, cn, f);
+    }
+    return sum;
+}
+
+/// solidBondForceAt over `lanes` lanes (lane 0 returns the force).
+SEASPRING_HD inline Double3 solidBondForceLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                                const Double3* ep, const SolidState& st, const SolidBonds& b,
+                                                const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const VcpmMaterial& m = st.material[st.body[s]];
+    const double sum_s = st.sum[s];
+    const int nb = b.count[s];
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    for (int q0 = 0; q0 < nb; q0 += int(lanes)) {
+        const int q = q0 + int(lane);
+        SolidForceTerm u{0.0, 0.0, 0.0, 0u, 0u};
+        if (q < nb) u = solidBondForceSlot(s, q, p, m, sum_s, ep, st, b, cn, f);
+        for (std::uint32_t l = 0; l < lanes; ++l) {
+            const SolidForceTerm v = valueOfLane(u, l, lanes);
+            if (lane == 0 && q0 + int(l) < nb) addForceTerm(v, fx, fy, fz);
+        }
+    }
+    return lane == 0 ? withRowForce(s, b, m, fx, fy, fz) : Double3{fx, fy, fz};
+}
+
+/// solidPredictorAt over `lanes` lanes.
+SEASPRING_HD inline void solidPredictorLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                             const SolidState& st, const SolidBonds& b, const ClampNodes& cn,
+                                             double f, double dt, double gx, double gy, double gz) {
+    if (solidOutside(st.keep, st.pos[s])) {  // the same verdict on every lane of s
+        if (lane == 0) solidFrozenAtPredictor(s, st);
+        return;
+    }
+    const Double3 fi = solidBondForceLanes(s, lane, lanes, st.pos, st, b, cn, f);
+    if (lane == 0) solidPredictorWith(s, st, f, dt, gx, gy, gz, fi);
+}
+
+/// solidCorrectorAt over `lanes` lanes.
+SEASPRING_HD inline void solidCorrectorLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                             const SolidState& st, const SolidBonds& b, const ClampNodes& cn,
+                                             double f, double dt, double gx, double gy, double gz) {
+    if (solidOutside(st.keep, st.pos[s])) return;
+    const Double3 fi = solidBondForceLanes(s, lane, lanes, st.pos_half, st, b, cn, f);
+    if (lane == 0) solidCorrectorWith(s, st, f, dt, gx, gy, gz, fi);
+}
+
+}  // namespace seaspring::physics
