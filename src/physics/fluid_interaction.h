@@ -57,47 +57,98 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std
 template <class Opt, bool kBound>
 struct PairBatch {
     static constexpr int kCap = 256;
+    static constexpr bool kLaminar = Opt::visco != Viscosity::Artificial;
+    static constexpr bool kSps = Opt::sps;
+    // The neighbours found so far (candidates that passed isNeighbour, in candidate order).
     std::uint32_t jj[kCap];
     std::uint8_t ln[kCap];
     float bx[kCap], by[kCap], bz[kCap], br[kCap];
-    PairTerms t[kCap];
+    // Their terms, one array per field (so that the SIMD lanes store whole vectors).
+    float tfrx[kCap], tfry[kCap], tfrz[kCap], tcf[kCap], tar[kCap], tdelta[kCap], tvisc[kCap];
+    float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
+    float tsx[kSps ? kCap : 1], tsy[kSps ? kCap : 1], tsz[kSps ? kCap : 1];
+    float tgxx[kSps ? kCap : 1], tgxy[kSps ? kCap : 1], tgxz[kSps ? kCap : 1], tgyy[kSps ? kCap : 1],
+        tgyz[kSps ? kCap : 1], tgzz[kSps ? kCap : 1];
     int m = 0;
 
     SEASPRING_HD void flush(const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                             const InteractionInputs& in, const FluidConstants& c, FluidAccum* acc) {
-        int n = 0;
-        for (int k = 0; k < m; ++k) {  // in place: n <= k
-            jj[n] = jj[k];
-            ln[n] = ln[k];
-            bx[n] = bx[k];
-            by[n] = by[k];
-            bz[n] = bz[k];
-            const float r = br[k];
-            br[n] = r;
-            n += isNeighbour(r, c) ? 1 : 0;
-        }
+        const int n = m;
         const std::uint32_t* __restrict sj = jj;
         const float *__restrict sx = bx, *__restrict sy = by, *__restrict sz = bz, *__restrict sr = br;
-        for (int q = 0; q < n; ++q)  // SIMD lanes
-            t[q] = fluidPairTerms<Opt, kBound>(sj[q], sx[q], sy[q], sz[q], sr[q], va, ovrhoa, pressa, taua, in, c);
-        for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc[ln[q]], t[q]);
+        for (int q = 0; q < n; ++q) {  // SIMD lanes
+            const PairTerms t =
+                fluidPairTerms<Opt, kBound>(sj[q], sx[q], sy[q], sz[q], sr[q], va, ovrhoa, pressa, taua, in, c);
+            tfrx[q] = t.frx;
+            tfry[q] = t.fry;
+            tfrz[q] = t.frz;
+            tcf[q] = t.cf;
+            tar[q] = t.ar;
+            tdelta[q] = t.delta;
+            tvisc[q] = t.visc;
+            if constexpr (kLaminar) {
+                tcv[q] = t.cv;
+                tdvx[q] = t.dvx;
+                tdvy[q] = t.dvy;
+                tdvz[q] = t.dvz;
+            }
+            if constexpr (kSps) {
+                tsx[q] = t.sx;
+                tsy[q] = t.sy;
+                tsz[q] = t.sz;
+                tgxx[q] = t.gv.xx; tgxy[q] = t.gv.xy; tgxz[q] = t.gv.xz;
+                tgyy[q] = t.gv.yy; tgyz[q] = t.gv.yz; tgzz[q] = t.gv.zz;
+            }
+        }
+        for (int q = 0; q < n; ++q) {  // in candidate order
+            PairTerms t;
+            t.frx = tfrx[q];
+            t.fry = tfry[q];
+            t.frz = tfrz[q];
+            t.cf = tcf[q];
+            t.ar = tar[q];
+            t.delta = tdelta[q];
+            t.visc = tvisc[q];
+            if constexpr (kLaminar) {
+                t.cv = tcv[q];
+                t.dvx = tdvx[q];
+                t.dvy = tdvy[q];
+                t.dvz = tdvz[q];
+            }
+            if constexpr (kSps) {
+                t.sx = tsx[q];
+                t.sy = tsy[q];
+                t.sz = tsz[q];
+                t.gv = SymTensor{tgxx[q], tgxy[q], tgxz[q], tgyy[q], tgyz[q], tgzz[q]};
+            }
+            addPairTerms<Opt, kBound>(acc[ln[q]], t);
+        }
         m = 0;
     }
 
-    /// Candidates [pb, pe), the first of them number `seen` of the block.
+    /// Candidates [pb, pe), the first of them number `seen` of the block: the neighbours among
+    /// them are appended (branch-free: every candidate is written at m, m advances on a
+    /// neighbour).
     SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen, std::uint32_t lanes,
                              const Float4& par, int cax, const Float4& va, float ovrhoa, float pressa,
                              const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, FluidAccum* acc) {
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
+            int w = m;  // w <= m + k < kCap inside the loop
             for (int k = 0; k < take; ++k) {
                 const std::uint32_t j = pb + std::uint32_t(k);
-                jj[m + k] = j;
-                ln[m + k] = std::uint8_t((seen + std::uint32_t(k)) & (lanes - 1u));
-                br[m + k] = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, bx[m + k], by[m + k], bz[m + k]);
+                float drx, dry, drz;
+                const float r = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
+                jj[w] = j;
+                ln[w] = std::uint8_t((seen + std::uint32_t(k)) & (lanes - 1u));
+                bx[w] = drx;
+                by[w] = dry;
+                bz[w] = drz;
+                br[w] = r;
+                w += isNeighbour(r, c) ? 1 : 0;
             }
-            m += take;
+            m = w;
             pb += std::uint32_t(take);
             seen += std::uint32_t(take);
             if (m == kCap) flush(va, ovrhoa, pressa, taua, in, c, acc);
@@ -113,17 +164,21 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
                                            const FluidConstants& c, const CellGrid& g, std::uint32_t lane,
-                                           std::uint32_t lanes, FluidAccum* acc) {
+                                           std::uint32_t lanes, FluidAccum* acc, const RowTable* rows = nullptr) {
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
     std::uint32_t seen = 0;
-    forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
+    auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (kCompact)
             batch.addRow(pb, pe, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
         else
             fluidPairsInRow<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
         seen += pe - pb;
-    });
+    };
+    if (rows != nullptr && !rows->full)
+        rows->forEachCandidateRow(psa, cell_start, row);
+    else
+        forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, row);
     if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
 }
 
@@ -140,11 +195,21 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     const float pressa = pa2.x, ovrhoa = pa2.y;
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
-    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane, lanes,
-                                            acc);
-    if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
-        fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                               lanes, acc);
+    if constexpr (kCompact) {  // the host: the rows once, for both blocks
+        RowTable rows;
+        rows.build<Opt::dim>(psa, c, g);
+        fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                                lanes, acc, &rows);
+        if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
+            fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                                   lanes, acc, &rows);
+    } else {
+        fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                                lanes, acc);
+        if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
+            fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                                   lanes, acc);
+    }
 }
 
 /// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane).

@@ -69,19 +69,32 @@ SEASPRING_HD_INLINE SearchBox searchBox(const Float4& psa, const CellGrid& g) {
     return b;
 }
 
-/// Candidates [pb, pe) of row (y, z) in the block whose first indices per cell are
-/// `cell_start`: the cells of the row in reach of `psa` (rowSpan). `gz` = the row's gap in z
-/// (cellGap, once per z). False when the row is out of reach.
+/// The cells of row (y, z) in reach of `psa`: linear cells [c0, c1) (rowSpan). `gz` = the row's
+/// gap in z (cellGap, once per z). False when the row is out of reach.
 template <int kDim>
-SEASPRING_HD_INLINE bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
-                                       const std::uint32_t* cell_start, const FluidConstants& c,
-                                       const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
+SEASPRING_HD_INLINE bool rowCells(const SearchBox& b, const Float4& psa, int y, int z, float gz,
+                                  const FluidConstants& c, const CellGrid& g, std::uint32_t& c0,
+                                  std::uint32_t& c1) {
     const float gy = kDim == 3 ? cellGap(y - b.cay, psa.y, g.cellsizef, b.margin) : 0.f;
     int x0, x1;
     if (!rowSpan(g, b.cax, psa.x, gy * gy + gz * gz, c.ker.kernelsize2, b.margin, x0, x1)) return false;
     const std::uint32_t row = g.linear(0, y, z);
-    pb = cell_start[row + std::uint32_t(x0)];
-    pe = cell_start[row + std::uint32_t(x1) + 1u];
+    c0 = row + std::uint32_t(x0);
+    c1 = row + std::uint32_t(x1) + 1u;
+    return true;
+}
+
+/// Candidates [pb, pe) of row (y, z) in the block whose first indices per cell are
+/// `cell_start`: the cells of the row in reach of `psa` (rowCells). False when the row is out of
+/// reach.
+template <int kDim>
+SEASPRING_HD_INLINE bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
+                                       const std::uint32_t* cell_start, const FluidConstants& c,
+                                       const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
+    std::uint32_t c0, c1;
+    if (!rowCells<kDim>(b, psa, y, z, gz, c, g, c0, c1)) return false;
+    pb = cell_start[c0];
+    pe = cell_start[c1];
     return true;
 }
 
@@ -106,5 +119,56 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
         }
     }
 }
+
+/// The rows of forEachCandidateRow, in its order, without a block: fn(c0, c1, par, cax) for each
+/// row in reach, [c0, c1) its linear cells (rowCells); forEachCandidateRow's rows of any block
+/// are [cell_start[c0], cell_start[c1]) of these, with the same `par` and `cax`. The host builds
+/// one RowTable per particle from it for all its blocks.
+template <int kDim, class RowFn>
+SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstants& c, const CellGrid& g, RowFn fn) {
+    const SearchBox box = searchBox<kDim>(psa, g);
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        for (int y = box.y0; y <= box.y1; ++y) {
+            std::uint32_t c0, c1;
+            if (!rowCells<kDim>(box, psa, y, z, gz, c, g, c0, c1)) continue;
+            const float rowdy = g.cellsizef * float(box.cay - y);
+            fn(c0, c1, rowFrame(psa, rowdy, rowdz), box.cax);
+        }
+    }
+}
+
+/// The rows in reach of one particle (forEachRowInReach), kept for all the blocks it visits
+/// (the host's path): row k has linear cells [c0[k], c1[k]) and the row frame (x, py[k], pz[k]).
+struct RowTable {
+    static constexpr int kCap = 256;  ///< rows at most; a larger search box: `full` (not built)
+    int n = 0;
+    bool full = false;
+    int cax = 0;
+    std::uint32_t c0[kCap], c1[kCap];
+    float py[kCap], pz[kCap];
+
+    template <int kDim>
+    SEASPRING_HD void build(const Float4& psa, const FluidConstants& c, const CellGrid& g) {
+        const SearchBox box = searchBox<kDim>(psa, g);
+        n = 0;
+        full = (box.z1 - box.z0 + 1) * (box.y1 - box.y0 + 1) > kCap;
+        if (full) return;
+        forEachRowInReach<kDim>(psa, c, g, [&](std::uint32_t r0, std::uint32_t r1, const Float4& par, int x) {
+            c0[n] = r0;
+            c1[n] = r1;
+            py[n] = par.y;
+            pz[n] = par.z;
+            cax = x;
+            ++n;
+        });
+    }
+    /// fn(pb, pe, par, cax) for the rows in the block of `cell_start`, as forEachCandidateRow.
+    template <class RowFn>
+    SEASPRING_HD void forEachCandidateRow(const Float4& psa, const std::uint32_t* cell_start, RowFn fn) const {
+        for (int k = 0; k < n; ++k) fn(cell_start[c0[k]], cell_start[c1[k]], Float4{psa.x, py[k], pz[k], psa.w}, cax);
+    }
+};
 
 }  // namespace seaspring::physics
