@@ -10,7 +10,7 @@
 #endif
 
 /// SEASPRING_HD, always inlined: for the small helpers of the innermost loops, which the host
-/// compiler would otherwise sometimes leave as calls (rowCandidates did: 13% of a CPU step).
+/// compiler would otherwise sometimes leave as calls (the row walk's helpers did: 13% of a CPU step).
 /// Inlining changes no result (no contraction, no reassociation on either side).
 #if defined(__CUDACC__)
 #define SEASPRING_HD_INLINE __host__ __device__ __forceinline__

@@ -84,46 +84,12 @@ SEASPRING_HD_INLINE bool rowCells(const SearchBox& b, const Float4& psa, int y, 
     return true;
 }
 
-/// Candidates [pb, pe) of row (y, z) in the block whose first indices per cell are
-/// `cell_start`: the cells of the row in reach of `psa` (rowCells). False when the row is out of
-/// reach.
-template <int kDim>
-SEASPRING_HD_INLINE bool rowCandidates(const SearchBox& b, const Float4& psa, int y, int z, float gz,
-                                       const std::uint32_t* cell_start, const FluidConstants& c,
-                                       const CellGrid& g, std::uint32_t& pb, std::uint32_t& pe) {
-    std::uint32_t c0, c1;
-    if (!rowCells<kDim>(b, psa, y, z, gz, c, g, c0, c1)) return false;
-    pb = cell_start[c0];
-    pe = cell_start[c1];
-    return true;
-}
-
-/// Visits the rows of cells around `psa`'s cell that can hold a neighbour of it (by z then y,
-/// ascending) in one block (`cell_start` of that block), calling
-///   fn(pb, pe, par, cax)
-/// for each row in reach: candidates [pb, pe) (absolute indices), `par` = psa's rowFrame for
-/// that row and `cax` = psa's cell in x (the arguments of pairOffset). The one row walk of every
-/// pair loop; `fn` is a lambda or functor passed by value (inlined on both backends).
-template <int kDim, class RowFn>
-SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint32_t* cell_start,
-                                             const FluidConstants& c, const CellGrid& g, RowFn fn) {
-    const SearchBox box = searchBox<kDim>(psa, g);
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float rowdz = g.cellsizef * float(box.caz - z);
-        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
-        for (int y = box.y0; y <= box.y1; ++y) {
-            std::uint32_t pb, pe;
-            if (!rowCandidates<kDim>(box, psa, y, z, gz, cell_start, c, g, pb, pe)) continue;
-            const float rowdy = g.cellsizef * float(box.cay - y);
-            fn(pb, pe, rowFrame(psa, rowdy, rowdz), box.cax);
-        }
-    }
-}
-
-/// The rows of forEachCandidateRow, in its order, without a block: fn(c0, c1, par, cax) for each
-/// row in reach, [c0, c1) its linear cells (rowCells); forEachCandidateRow's rows of any block
-/// are [cell_start[c0], cell_start[c1]) of these, with the same `par` and `cax`. The host builds
-/// one RowTable per particle from it for all its blocks.
+/// The rows of cells around `psa`'s cell that can hold a neighbour of it (by z then y,
+/// ascending), whatever the block: fn(c0, c1, par, cax) for each row in reach, [c0, c1) its
+/// linear cells (rowCells), `par` = psa's rowFrame for that row and `cax` = psa's cell in x (the
+/// arguments of pairOffset). The one row walk of every pair loop: forEachCandidateRow takes a
+/// block's candidates from it, and the host builds one RowTable per particle from it for all
+/// its blocks.
 template <int kDim, class RowFn>
 SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstants& c, const CellGrid& g, RowFn fn) {
     const SearchBox box = searchBox<kDim>(psa, g);
@@ -137,6 +103,18 @@ SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstan
             fn(c0, c1, rowFrame(psa, rowdy, rowdz), box.cax);
         }
     }
+}
+
+/// The rows in reach of `psa` (forEachRowInReach) in one block (`cell_start` of that block),
+/// calling fn(pb, pe, par, cax) for each: candidates [pb, pe) (absolute indices), `par` and
+/// `cax` as forEachRowInReach gives them. `fn` is a lambda or functor passed by value (inlined
+/// on both backends).
+template <int kDim, class RowFn>
+SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint32_t* cell_start,
+                                             const FluidConstants& c, const CellGrid& g, RowFn fn) {
+    forEachRowInReach<kDim>(psa, c, g, [&](std::uint32_t c0, std::uint32_t c1, const Float4& par, int cax) {
+        fn(cell_start[c0], cell_start[c1], par, cax);
+    });
 }
 
 /// The rows in reach of one particle (forEachRowInReach), kept for all the blocks it visits
