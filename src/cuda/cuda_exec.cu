@@ -30,12 +30,12 @@ std::uint32_t blockMaxFromEnv() {
     return (*end == '\0') ? std::uint32_t(std::min<unsigned long>(v, 0xffffffffUL)) : kSequenceBlockMaxDefault;
 }
 
-/// log2 of SEASPRING_BOND_LANES (1, 2, 4, 8 or 16) from the environment, else
+/// log2 of SEASPRING_BOND_LANES (1, 2, 4 or 8) from the environment, else
 /// kBondLaneShiftDefault.
 std::uint32_t bondLaneShiftFromEnv() {
     const char* env = std::getenv("SEASPRING_BOND_LANES");
     if (env == nullptr || *env == '\0') return kBondLaneShiftDefault;
-    for (std::uint32_t s = 0; s <= 4; ++s)
+    for (std::uint32_t s = 0; s <= 3; ++s)
         if (std::strcmp(env, std::to_string(1u << s).c_str()) == 0) return s;
     return kBondLaneShiftDefault;
 }

@@ -172,7 +172,7 @@ __global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(
 constexpr std::uint32_t kSequenceBlockMaxDefault = 2048;
 
 /// log2 of the threads per solid particle in the sub-cycle's passes (bond lanes,
-/// physics/vcpm_substep.h). SEASPRING_BOND_LANES=N (1, 2, 4, 8, 16) overrides it.
+/// physics/vcpm_substep.h). SEASPRING_BOND_LANES=N (1, 2, 4, 8) overrides it.
 constexpr std::uint32_t kBondLaneShiftDefault = 1;
 
 class CudaExec {

@@ -128,7 +128,8 @@ SEASPRING_HD inline double solidSumLanes(std::uint32_t s, std::uint32_t lane, st
         const int q = q0 + int(lane);
         SolidSumTerm u{0.0, 0.0, 0u, 0u};
         if (q < nb) u = solidSumSlot(s, q, p, out_s, crit, ep, st, b, cn, f);
-        for (std::uint32_t l = 0; l < lanes; ++l) {
+        if (lane == 0) addSumTerm(u, s, st, t, sum);  // q0 < nb
+        for (std::uint32_t l = 1; l < lanes; ++l) {  // every lane takes part in the exchange
             const SolidSumTerm v = valueOfLane(u, l, lanes);
             if (lane == 0 && q0 + int(l) < nb) addSumTerm(v, s, st, t, sum);
         }
@@ -153,7 +154,8 @@ SEASPRING_HD inline Double3 solidBondForceLanes(std::uint32_t s, std::uint32_t l
         const int q = q0 + int(lane);
         SolidForceTerm u{0.0, 0.0, 0.0, 0u, 0u};
         if (q < nb) u = solidBondForceSlot(s, q, p, m, sum_s, ep, st, b, cn, f);
-        for (std::uint32_t l = 0; l < lanes; ++l) {
+        if (lane == 0) addForceTerm(u, fx, fy, fz);  // q0 < nb
+        for (std::uint32_t l = 1; l < lanes; ++l) {  // every lane takes part in the exchange
             const SolidForceTerm v = valueOfLane(u, l, lanes);
             if (lane == 0 && q0 + int(l) < nb) addForceTerm(v, fx, fy, fz);
         }

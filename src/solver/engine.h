@@ -522,11 +522,18 @@ private:
             cm.motions = solid_motions_.data();
         }
         const SubCycleContact ct = subCycleContact();
-        const BondLanes bl{exec_.bondLaneShift()};
-        const SolidSubCycle body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
-                                 setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, bl};
-        exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, (solid_.n << bl.shift) + solid_.nclamp,
-                       body);  // widest: the sums
+        auto cycle = [&](auto bl) {
+            const SolidSubCycle<decltype(bl)::shift> body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
+                                                          setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, bl};
+            exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, (solid_.n << bl.shift) + solid_.nclamp,
+                           body);  // widest: the sums
+        };
+        switch (exec_.bondLaneShift()) {  // 0 on the host
+        case 0: cycle(BondLanes<0>{}); break;
+        case 1: cycle(BondLanes<1>{}); break;
+        case 2: cycle(BondLanes<2>{}); break;
+        default: cycle(BondLanes<3>{}); break;
+        }
     }
 
     /// The contact views of the solids' sub-cycle (off without contact).

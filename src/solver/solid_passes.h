@@ -50,33 +50,37 @@ struct SolidCorrectorPass {
     SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidCorrectorAt(s, st, b, cn, f, dt, gx, gy, gz); }
 };
 
-/// Bond lanes (physics/vcpm_substep.h; the GPU's sub-cycle): index k of [0, n << shift) is
-/// lane k mod 2^shift of solid particle k >> shift. A particle's lanes are consecutive threads
-/// of one warp (every runner's indices start at 0 and its blocks are whole warps).
+/// Bond lanes (physics/vcpm_substep.h; the GPU's sub-cycle): index k of [0, n << kShift) is
+/// lane k mod 2^kShift of solid particle k >> kShift (kShift = 0: one thread per particle, the
+/// host). A particle's lanes are consecutive threads of one warp (every runner's indices start
+/// at 0 and its blocks are whole warps). A compile-time constant, so the lanes' loops unroll.
+template <std::uint32_t kShift>
 struct BondLanes {
-    std::uint32_t shift = 0;  ///< log2 of the lanes per particle (0: one thread per particle)
-    SEASPRING_HD std::uint32_t lanes() const { return 1u << shift; }
-    SEASPRING_HD std::uint32_t particle(std::uint32_t k) const { return k >> shift; }
-    SEASPRING_HD std::uint32_t lane(std::uint32_t k) const { return k & (lanes() - 1u); }
+    static constexpr std::uint32_t shift = kShift;
+    SEASPRING_HD static constexpr std::uint32_t lanes() { return 1u << kShift; }
+    SEASPRING_HD static constexpr std::uint32_t particle(std::uint32_t k) { return k >> kShift; }
+    SEASPRING_HD static constexpr std::uint32_t lane(std::uint32_t k) { return k & (lanes() - 1u); }
 };
 
+template <std::uint32_t kShift>
 struct SolidPredictorLanesPass {
     physics::SolidState st;
     physics::SolidBonds b;
     physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
-    BondLanes bl;
+    BondLanes<kShift> bl;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         physics::solidPredictorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
     }
 };
 
+template <std::uint32_t kShift>
 struct SolidCorrectorLanesPass {
     physics::SolidState st;
     physics::SolidBonds b;
     physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
-    BondLanes bl;
+    BondLanes<kShift> bl;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         physics::solidCorrectorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
     }
@@ -138,6 +142,7 @@ struct SolidSumsPass {
 /// SolidSumsPass with bond lanes: indices [0, b.n << shift) the solid particles' lanes
 /// (physics::solidSumLanes; lane 0 writes S and the contact force), then one index per clamp
 /// node.
+template <std::uint32_t kShift>
 struct SolidSumsLanesPass {
     const physics::Double3* ep;
     physics::SolidState st;
@@ -145,7 +150,7 @@ struct SolidSumsLanesPass {
     physics::ClampNodes cn;
     double f;
     SubCycleContact ct;
-    BondLanes bl;
+    BondLanes<kShift> bl;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         const std::uint32_t nl = b.n << bl.shift;
         if (k < nl) {
@@ -209,6 +214,7 @@ struct CountCombine {
 /// Clamp motion (and the contact lists), then n sub-steps of dt (fractions of the interval
 /// computed with IEEE division and product, so every runner has the same bits); with contact,
 /// the contact force in the sums pass of each evaluation.
+template <std::uint32_t kShift>
 struct SolidSubCycle {
     physics::SolidState st;
     physics::SolidBonds b;
@@ -217,7 +223,7 @@ struct SolidSubCycle {
     int n;
     double dt, gx, gy, gz;
     SubCycleContact ct;
-    BondLanes bl;  ///< shift 0: one thread per particle (the host); else the lanes passes
+    BondLanes<kShift> bl;  ///< shift 0: one thread per particle (the host); else the lanes passes
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
@@ -230,16 +236,16 @@ struct SolidSubCycle {
         const std::uint32_t nl = b.n << bl.shift;
         for (int m = 0; m < n; ++m) {
             const double f0 = double(m) * inv_n, fh = (double(m) + 0.5) * inv_n;
-            if (bl.shift == 0) {
+            if constexpr (kShift == 0) {
                 run(nsums, SolidSumsPass{st.pos, st, b, cn, f0, ct});
                 run(b.n, SolidPredictorPass{st, b, cn, f0, dt, gx, gy, gz});
                 run(nsums, SolidSumsPass{st.pos_half, st, b, cn, fh, ct});
                 run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
             } else {
-                run(nl + cn.n, SolidSumsLanesPass{st.pos, st, b, cn, f0, ct, bl});
-                run(nl, SolidPredictorLanesPass{st, b, cn, f0, dt, gx, gy, gz, bl});
-                run(nl + cn.n, SolidSumsLanesPass{st.pos_half, st, b, cn, fh, ct, bl});
-                run(nl, SolidCorrectorLanesPass{st, b, cn, fh, dt, gx, gy, gz, bl});
+                run(nl + cn.n, SolidSumsLanesPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
+                run(nl, SolidPredictorLanesPass<kShift>{st, b, cn, f0, dt, gx, gy, gz, bl});
+                run(nl + cn.n, SolidSumsLanesPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
+                run(nl, SolidCorrectorLanesPass<kShift>{st, b, cn, fh, dt, gx, gy, gz, bl});
             }
         }
     }
