@@ -30,10 +30,10 @@ for ((r = 1; r <= ${ROUNDS:-3}; ++r)); do
     done
     if ((n3 > 0)); then
       SEASPRING_BOND_LANES=$l SEASPRING_TIMERS=1 $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:$n3 $w/l3 $w/o_l3 >$w/log 2>&1
-      sol=$(grep -A12 'phase times' $w/log | grep -i 'solid' | grep -o '[0-9.]* ms/step' | head -1 | cut -d' ' -f1)
+      sol=$(grep -o 'solid [0-9.]*' $w/log | tail -1 | cut -d' ' -f2)
       hash=$(grep -o 'State hash: [0-9a-f]*' $w/log | cut -d' ' -f3)
       echo "liao3d lanes=$l round=$r solid_ms_per_step=${sol:-NA} hash=$hash" | tee -a $res
-      [[ -z $sol ]] && grep -A12 'phase times' $w/log | head -14
+      [[ -z $sol ]] && tail -5 $w/log
     fi
   done
 done
