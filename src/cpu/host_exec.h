@@ -95,7 +95,7 @@ public:
 
     /// One thread per solid particle in the sub-cycle (solver::BondLanes): the host's threads
     /// are few and each walks a particle's bonds with no latency to hide.
-    std::uint32_t bondLaneShift() const { return 0; }
+    std::uint32_t bondLaneShift(std::uint64_t /*work*/, std::uint32_t /*nsolid*/) const { return 0; }
 
     /// Runs `body(run)` with a runner run(n, pass) = pass(i) for i < n, all threads of one
     /// parallel region sharing each pass (`omp for`, whose implied barrier orders the passes).

@@ -30,14 +30,13 @@ std::uint32_t blockMaxFromEnv() {
     return (*end == '\0') ? std::uint32_t(std::min<unsigned long>(v, 0xffffffffUL)) : kSequenceBlockMaxDefault;
 }
 
-/// log2 of SEASPRING_BOND_LANES (1, 2, 4 or 8) from the environment, else
-/// kBondLaneShiftDefault.
-std::uint32_t bondLaneShiftFromEnv() {
+/// log2 of SEASPRING_BOND_LANES (1, 2, 4 or 8) from the environment, else -1 (the rule).
+int bondLaneShiftFromEnv() {
     const char* env = std::getenv("SEASPRING_BOND_LANES");
-    if (env == nullptr || *env == '\0') return kBondLaneShiftDefault;
-    for (std::uint32_t s = 0; s <= 3; ++s)
-        if (std::strcmp(env, std::to_string(1u << s).c_str()) == 0) return s;
-    return kBondLaneShiftDefault;
+    if (env == nullptr || *env == '\0') return -1;
+    for (std::uint32_t s = 0; s <= kMaxBondLaneShift; ++s)
+        if (std::strcmp(env, std::to_string(1u << s).c_str()) == 0) return int(s);
+    return -1;
 }
 }  // namespace
 

@@ -171,9 +171,16 @@ __global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(
 /// few percent of the faster path. SEASPRING_SOLID_BLOCK_MAX=N overrides it.
 constexpr std::uint32_t kSequenceBlockMaxDefault = 2048;
 
-/// log2 of the threads per solid particle in the sub-cycle's passes (bond lanes,
-/// physics/vcpm_substep.h). SEASPRING_BOND_LANES=N (1, 2, 4, 8) overrides it.
-constexpr std::uint32_t kBondLaneShiftDefault = 1;
+/// Bond lanes (physics/vcpm_substep.h) of the sub-cycle's passes on the GPU: a solid that runs
+/// in one block (above) keeps one thread per particle; one that runs a launch per pass gets
+/// the most lanes, up to 8, that keep nsolid x lanes <= kBondLaneThreads. Measured on an H100
+/// (tools/device_bondlanes.sh, docs/performance.md): the Antoci gate (395 particles, one block)
+/// 1.08x slower with 2 lanes, 1.25x with 4; FlexStruc Liao 2D (one block) 0.97-1.06x; in
+/// launches per pass, the FlexStruc Liao 3D plate (12,250) 0.82x with 2, 0.73x with 4, 0.70x
+/// with 8; a 3D bar of 6,169 particles 0.73x / 0.59x / 0.56x; one of 48,625 0.87x with 2,
+/// 1.37x with 4. SEASPRING_BOND_LANES=N (1, 2, 4, 8) overrides the rule.
+constexpr std::uint32_t kBondLaneThreads = 98304;
+constexpr std::uint32_t kMaxBondLaneShift = 3;
 
 class CudaExec {
 public:
@@ -257,8 +264,15 @@ public:
         body(run);
     }
 
-    /// log2 of the bond lanes per solid particle of the sub-cycle (solver::BondLanes).
-    std::uint32_t bondLaneShift() const { return bond_lane_shift_; }
+    /// log2 of the bond lanes per solid particle of a sub-cycle of `work` indices (as
+    /// `sequence` takes it) over `nsolid` particles (solver::BondLanes; kBondLaneThreads).
+    std::uint32_t bondLaneShift(std::uint64_t work, std::uint32_t nsolid) const {
+        if (bond_lane_shift_ >= 0) return std::uint32_t(bond_lane_shift_);
+        if (work <= block_max_) return 0;
+        std::uint32_t s = 0;
+        while (s < kMaxBondLaneShift && (std::uint64_t(nsolid) << (s + 1)) <= kBondLaneThreads) ++s;
+        return s;
+    }
 
     void prepareSort(std::size_t n);
     /// Sorts keys[b, e) ascending carrying perm[b, e) (CUB radix sort, the *_alt arrays as its
@@ -319,7 +333,7 @@ private:
     };
     std::unique_ptr<void, FreeHost> readback_;  ///< pinned host memory for the readbacks (kReadbackBytes)
     std::uint32_t block_max_ = kSequenceBlockMaxDefault;
-    std::uint32_t bond_lane_shift_ = kBondLaneShiftDefault;
+    int bond_lane_shift_ = -1;  ///< SEASPRING_BOND_LANES's log2; -1: the rule
     const std::uint32_t* gate_ = nullptr;  ///< see gate()
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
     DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)

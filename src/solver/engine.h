@@ -528,7 +528,7 @@ private:
             exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, (solid_.n << bl.shift) + solid_.nclamp,
                            body);  // widest: the sums
         };
-        switch (exec_.bondLaneShift()) {  // 0 on the host
+        switch (exec_.bondLaneShift(std::uint64_t(solid_.n) + solid_.nclamp, solid_.n)) {  // 0 on the host
         case 0: cycle(BondLanes<0>{}); break;
         case 1: cycle(BondLanes<1>{}); break;
         case 2: cycle(BondLanes<2>{}); break;
