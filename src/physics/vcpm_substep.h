@@ -24,16 +24,23 @@ SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double
                    (fbond.z + ffluid.z) * m.inv_mass + gz - m.damp_rate * vel.z};
 }
 
-/// Predictor of a sub-step (Eqs. 20-21) for particle s, given its bond force `fi` at r^m
-/// (solidBondForceAt): a^m, then v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
-SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
-                                            double gy, double gz, const Double3& fi) {
+/// The force on solid particle s other than the fluid's: its bond force `fi`, plus its point
+/// load at time fraction f, plus (with contact) its contact force, added in that order.
+SEASPRING_HD inline Double3 solidNonFluidForce(std::uint32_t s, const SolidState& st, double f, const Double3& fi) {
     const Double3 fl = pointLoadAt(st, s, f);
     Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
     if (st.contact_force) {
         const Double3 fc = st.contact_force[s];
         fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
     }
+    return fb;
+}
+
+/// Predictor of a sub-step (Eqs. 20-21) for particle s, given its bond force `fi` at r^m
+/// (solidBondForceAt): a^m, then v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
+SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
+                                            double gy, double gz, const Double3& fi) {
+    const Double3 fb = solidNonFluidForce(s, st, f, fi);
     const Double3 v = st.vel[s], p = st.pos[s];
     const Double3 a = solidAcceleration(fb, st.fluid_force[s], v, st.material[st.body[s]], gx, gy, gz);
     const double dth = 0.5 * dt;
@@ -68,12 +75,7 @@ SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st,
 /// faster than the material's max_speed.
 SEASPRING_HD inline void solidCorrectorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
                                             double gy, double gz, const Double3& fi) {
-    const Double3 fl = pointLoadAt(st, s, f);
-    Double3 fb{fi.x + fl.x, fi.y + fl.y, fi.z + fl.z};
-    if (st.contact_force) {
-        const Double3 fc = st.contact_force[s];
-        fb = Double3{fb.x + fc.x, fb.y + fc.y, fb.z + fc.z};
-    }
+    const Double3 fb = solidNonFluidForce(s, st, f, fi);
     const Double3 a = solidAcceleration(fb, st.fluid_force[s], st.vel[s], st.material[st.body[s]], gx, gy, gz);
     const Double3 v0 = st.vel0[s], p0 = st.pos[s];
     const Double3 v{v0.x + dt * a.x, v0.y + dt * a.y, v0.z + dt * a.z};
