@@ -155,8 +155,8 @@ public:
                     bool ledger) override {
         noForcesAhead("solidSteps");
         if (solid_.n == 0) return;
-        if (n > 0) solidSubCycle(t0, dt, n, motions);
-        solidToBoundary(dt * n, ledger);
+        if (n > 0) solidSubCycle(t0, dt, n, motions, ledger);  // it ends with solidToBoundary's pass
+        else solidToBoundary(0.0, ledger);
     }
     std::uint32_t solidsPastBounds() override {
         if (solid_.n == 0) return 0;
@@ -509,7 +509,7 @@ private:
     }
 
     /// n solid sub-steps of dt from t0 (clamp nodes moved by `motions` over the whole interval).
-    void solidSubCycle(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions) {
+    void solidSubCycle(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) {
         solid_.t0 = t0;
         solid_.span = dt * double(n);
         ClampMotion cm;
@@ -524,7 +524,8 @@ private:
         const SubCycleContact ct = subCycleContact();
         auto cycle = [&](auto bl) {
             const SolidSubCycle<decltype(bl)::shift> body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
-                                                          setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, bl};
+                                                          setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, bl,
+                                                          toBoundaryPass(dt * n, ledger)};
             exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, (solid_.n << bl.shift) + solid_.nclamp,
                            body);  // widest: the sums
         };
@@ -557,11 +558,13 @@ private:
 
     /// Solid positions and velocities into the boundary block after a sub-cycle of length dt;
     /// `ledger`: accumulate the impulse and work of the hydrodynamic force.
+    SolidToBoundaryPass toBoundaryPass(double dt, bool ledger) {
+        return SolidToBoundaryPass{solid_.slot.data(), solid_.pos.data(), solid_.vel.data(), solid_.fluid_force.data(),
+                                   dt, solid_.impulse.data(), solid_.work.data(), ledger, p_.pos.data(),
+                                   p_.velrho.data()};
+    }
     void solidToBoundary(double dt, bool ledger) {
-        exec_.template forEach<LaunchDefault>(
-            0u, solid_.n,
-            SolidToBoundaryPass{solid_.slot.data(), solid_.pos.data(), solid_.vel.data(), solid_.fluid_force.data(), dt,
-                                solid_.impulse.data(), solid_.work.data(), ledger, p_.pos.data(), p_.velrho.data()});
+        exec_.template forEach<LaunchDefault>(0u, solid_.n, toBoundaryPass(dt, ledger));
     }
 
     Exec exec_;

@@ -213,7 +213,8 @@ struct CountCombine {
 
 /// Clamp motion (and the contact lists), then n sub-steps of dt (fractions of the interval
 /// computed with IEEE division and product, so every runner has the same bits); with contact,
-/// the contact force in the sums pass of each evaluation.
+/// the contact force in the sums pass of each evaluation; last, the solid's end state into the
+/// boundary block (SolidToBoundaryPass, with the ledger's impulse and work over the cycle).
 template <std::uint32_t kShift>
 struct SolidSubCycle {
     physics::SolidState st;
@@ -224,6 +225,7 @@ struct SolidSubCycle {
     double dt, gx, gy, gz;
     SubCycleContact ct;
     BondLanes<kShift> bl;  ///< shift 0: one thread per particle (the host); else the lanes passes
+    SolidToBoundaryPass to_boundary;  ///< the last pass: the end state into the boundary block
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
@@ -248,6 +250,7 @@ struct SolidSubCycle {
                 run(nl, SolidCorrectorLanesPass<kShift>{st, b, cn, fh, dt, gx, gy, gz, bl});
             }
         }
+        run(b.n, to_boundary);  // in the same launch as the sub-steps when they run in one block
     }
 };
 
