@@ -29,6 +29,7 @@
 #include "solver/particle_sort.h"
 #include "solver/particle_store.h"
 #include "solver/solid_arrays.h"
+#include "solver/solid_cycle.h"
 #include "solver/solid_passes.h"
 
 namespace seaspring::solver {
@@ -155,7 +156,8 @@ public:
                     bool ledger) override {
         noForcesAhead("solidSteps");
         if (solid_.n == 0) return;
-        if (n > 0) solidSubCycle(t0, dt, n, motions, ledger);  // it ends with solidToBoundary's pass
+        if (n > 0)  // it ends with solidToBoundary's pass
+            runSolidSubCycle(exec_, solid_, solid_motions_, solidViews(), t0, dt, n, motions, ledger);
         else solidToBoundary(0.0, ledger);
     }
     std::uint32_t solidsPastBounds() override {
@@ -167,7 +169,8 @@ public:
     void startSolidsCheck() override {
         if (solid_.n == 0) return;
         exec_.reduceDeferred(0u, solid_.n, 0u,
-                             SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(), subCycleContact()},
+                             SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(),
+                                            solidContactViews(solid_, solidViews())},
                              CountCombine{}, solid_check_);
         solid_check_started_ = true;
     }
@@ -508,63 +511,13 @@ private:
                                               SolidSlotPass{p_.id.data(), solid_.first, solid_.n, solid_.slot.data()});
     }
 
-    /// n solid sub-steps of dt from t0 (clamp nodes moved by `motions` over the whole interval).
-    void solidSubCycle(double t0, double dt, int n, const std::vector<physics::RigidMotionGpu>& motions, bool ledger) {
-        solid_.t0 = t0;
-        solid_.span = dt * double(n);
-        ClampMotion cm;
-        cm.pos_initial = solid_.clamp_pos_initial.data();
-        cm.object = solid_.clamp_object.data();
-        cm.pos_start = solid_.clamp_start.data();
-        cm.pos_end = solid_.clamp_end.data();
-        if (solid_.clamps_move && !motions.empty()) {  // fixed clamps read no motion
-            assignFrom(solid_motions_, motions);
-            cm.motions = solid_motions_.data();
-        }
-        const SubCycleContact ct = subCycleContact();
-        auto cycle = [&](auto bl) {
-            const SolidSubCycle<decltype(bl)::shift> body{solid_.state(), solid_.bonds(), solid_.clamps(), cm, n, dt,
-                                                          setup_.step.gx, setup_.step.gy, setup_.step.gz, ct, bl,
-                                                          toBoundaryPass(dt * n, ledger)};
-            exec_.sequence(std::uint64_t(solid_.n) + solid_.nclamp, (solid_.n << bl.shift) + solid_.nclamp,
-                           body);  // widest: the sums
-        };
-        switch (exec_.bondLaneShift(std::uint64_t(solid_.n) + solid_.nclamp, solid_.n)) {  // 0 on the host
-        case 0: cycle(BondLanes<0>{}); break;
-        case 1: cycle(BondLanes<1>{}); break;
-        case 2: cycle(BondLanes<2>{}); break;
-        default: cycle(BondLanes<3>{}); break;
-        }
-    }
-
-    /// The contact views of the solids' sub-cycle (off without contact).
-    SubCycleContact subCycleContact() {
-        SubCycleContact ct;
-        if (!solid_.contact_on) return ct;
-        ct.on = true;
-        ct.w.cell_start = cs_bound_.data();
-        ct.w.id = p_.id.data();
-        ct.w.pos = p_.pos.data();
-        ct.w.velrho = p_.velrho.data();
-        ct.w.first_solid = solid_.first;
-        ct.w.nsolid = solid_.n;
-        ct.w.clamp_id = solid_.clamp_pid.data();
-        ct.g = setup_.grid;
-        ct.cp = solid_.contact;
-        ct.cl = solid_.contactList();
-        ct.force = solid_.contact_force.data();
-        return ct;
-    }
-
-    /// Solid positions and velocities into the boundary block after a sub-cycle of length dt;
-    /// `ledger`: accumulate the impulse and work of the hydrodynamic force.
-    SolidToBoundaryPass toBoundaryPass(double dt, bool ledger) {
-        return SolidToBoundaryPass{solid_.slot.data(), solid_.pos.data(), solid_.vel.data(), solid_.fluid_force.data(),
-                                   dt, solid_.impulse.data(), solid_.work.data(), ledger, p_.pos.data(),
-                                   p_.velrho.data()};
+    /// The boundary block and the set-up as the solids' sub-cycle sees them (solid_cycle.h).
+    SolidBlockViews solidViews() {
+        return SolidBlockViews{cs_bound_.data(), p_.id.data(), p_.pos.data(), p_.velrho.data(), setup_.grid,
+                               setup_.step.gx, setup_.step.gy, setup_.step.gz};
     }
     void solidToBoundary(double dt, bool ledger) {
-        exec_.template forEach<LaunchDefault>(0u, solid_.n, toBoundaryPass(dt, ledger));
+        exec_.template forEach<LaunchDefault>(0u, solid_.n, solidToBoundaryPass(solid_, solidViews(), dt, ledger));
     }
 
     Exec exec_;
