@@ -62,27 +62,19 @@ struct BondLanes {
     SEASPRING_HD static constexpr std::uint32_t lane(std::uint32_t k) { return k & (lanes() - 1u); }
 };
 
-template <std::uint32_t kShift>
-struct SolidPredictorLanesPass {
+/// The predictor (kCorrector false) or the corrector pass of a sub-step with bond lanes.
+template <std::uint32_t kShift, bool kCorrector>
+struct SolidStepLanesPass {
     physics::SolidState st;
     physics::SolidBonds b;
     physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
     BondLanes<kShift> bl;
     SEASPRING_HD void operator()(std::uint32_t k) const {
-        physics::solidPredictorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
-    }
-};
-
-template <std::uint32_t kShift>
-struct SolidCorrectorLanesPass {
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f, dt, gx, gy, gz;
-    BondLanes<kShift> bl;
-    SEASPRING_HD void operator()(std::uint32_t k) const {
-        physics::solidCorrectorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
+        if constexpr (kCorrector)
+            physics::solidCorrectorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
+        else
+            physics::solidPredictorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
     }
 };
 
@@ -245,9 +237,9 @@ struct SolidSubCycle {
                 run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
             } else {
                 run(nl + cn.n, SolidSumsLanesPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
-                run(nl, SolidPredictorLanesPass<kShift>{st, b, cn, f0, dt, gx, gy, gz, bl});
+                run(nl, SolidStepLanesPass<kShift, false>{st, b, cn, f0, dt, gx, gy, gz, bl});
                 run(nl + cn.n, SolidSumsLanesPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
-                run(nl, SolidCorrectorLanesPass<kShift>{st, b, cn, fh, dt, gx, gy, gz, bl});
+                run(nl, SolidStepLanesPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
             }
         }
         run(b.n, to_boundary);  // in the same launch as the sub-steps when they run in one block
