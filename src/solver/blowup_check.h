@@ -84,8 +84,8 @@ public:
     /// Whether a scan is due after `step`: -blowupcheck steps since the last scan (solid-only
     /// runs count sub-steps, which advance in chunks).
     bool scanDue(long long step) const { return every_ > 0 && step - last_scan_ >= every_; }
-    /// Whether the scan due now must download the state (every K-th periodic scan; outputs and
-    /// solid alarms always do).
+    /// Whether the scan due now must download the state: K - 1 quick scans since the last full
+    /// one (outputs and solid alarms always scan in full, and any full scan restarts the count).
     bool keepDue() const { return since_keep_ + 1 >= keep_every_; }
     /// Scans a state (id order); updates the per-body out-of-domain counts.
     std::optional<BlowupDiagnosis> scan(const HostState& st, double t, long long step, double dt);
@@ -93,8 +93,6 @@ public:
     /// count above zero takes the full scan instead). `solid_pos`: the solid particles'
     /// positions (solid order) for the out-of-domain counts.
     void quickScan(const std::vector<physics::Double3>& solid_pos, double t, long long step);
-    /// Periodic scans per kept state (resolveKeepEvery).
-    long long keepEvery() const { return keep_every_; }
     /// Adds the particles a per-step diagnosis is about (excluded fluid, which reason, where).
     void describe(BlowupDiagnosis& d, const HostState& st) const;
     /// Out-of-domain counts per body (empty without solids).
