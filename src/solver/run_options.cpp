@@ -370,7 +370,7 @@ Run control:
   -blowupkeep:K        download the state at every K-th of those scans and keep it as the
                        last good state, written if a later check fails (default 0: one
                        scan in ceil(particles / 262144)); the others count non-finite
-                       particles on the device
+                       particles where the state lives (no download)
   -sv:LIST             outputs, comma-separated: h5 (particle files, default), vtk (VTU
                        files in OUTDIR/vtk), none; DualSPHysics' binx is taken as h5 and
                        info as run.json (a note each)
