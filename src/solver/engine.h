@@ -24,6 +24,7 @@
 #include "core/error.h"
 #include "solver/backend.h"
 #include "solver/force_passes.h"
+#include "solver/gauge_arrays.h"
 #include "solver/launch.h"
 #include "solver/particle_passes.h"
 #include "solver/particle_sort.h"
@@ -212,35 +213,10 @@ public:
         for (std::uint32_t i = 0; i < nbound_; ++i) out[ids[i]] = sorted[i];
     }
 
-    void setGauges(const GaugeQueries& q) override {
-        assignFrom(gauge_points_, q.points);
-        assignFrom(gauge_rows_, q.maxz_rows);
-        gauge_samples_.resize(q.points.size());
-        gauge_maxz_.resize(q.maxz_rows.size());
-        assignFrom(gauge_positions_, std::vector<physics::Double3>(q.ids.size(), physics::Double3{0, 0, 0}));
-        gauge_nids_ = std::uint32_t(q.ids.size());
-        if (gauge_nids_ > 0) assignFrom(gauge_slot_of_id_, gaugeSlotsOfIds(q.ids, nbound_));
-    }
+    void setGauges(const GaugeQueries& q) override { gauges_.set(q, nbound_); }
     void gauges(GaugeResults& out) override {
         settleDivide();
-        const std::uint32_t npts = std::uint32_t(gauge_points_.size()), nrows = std::uint32_t(gauge_rows_.size());
-        dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
-            constexpr int kDim = decltype(dim)::value;
-            exec_.template forEach<LaunchGauges>(
-                0u, npts,
-                GaugeSamplePass<decltype(kernel), kDim>{gauge_points_.data(), cs_fluid_.data(), p_.poscell.data(),
-                                                        p_.velrho.data(), setup_.fluid, setup_.grid,
-                                                        gauge_samples_.data()});
-            exec_.template forEach<LaunchGauges>(
-                0u, nrows, MaxzRowPass<kDim>{gauge_rows_.data(), cs_fluid_.data(), p_.pos.data(), gauge_maxz_.data()});
-        });
-        if (gauge_nids_ > 0)
-            exec_.template forEach<LaunchGauges>(0u, nbound_,
-                                                 GaugePositionPass{p_.id.data(), p_.pos.data(),
-                                                                   gauge_slot_of_id_.data(), gauge_positions_.data()});
-        copyToHost(gauge_samples_, out.samples);
-        copyToHost(gauge_maxz_, out.maxz);
-        copyToHost(gauge_positions_, out.positions);
+        gauges_.answer(exec_, setup_, cs_fluid_.data(), p_.view(), nbound_, out);
     }
 
     DivideCounts divideCounts() const override { return counts_; }
@@ -417,24 +393,11 @@ private:
         }
     }
 
-    /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order.
-    /// Each field goes through one staging buffer kept by the engine (no allocation, no fresh
-    /// pages per download: the periodic blow-up scan downloads the state every -blowupcheck
-    /// steps) into `out`, whose vectors keep their capacity when the caller reuses it.
+    /// The fields with a flag in `any` (every field for ~0u) and none in `none`, in id order
+    /// (downloadInIdOrder, through the staging buffers the engine keeps).
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
-        copyToHost(p_.id, ids_host_);
-        const std::uint32_t* ids = ids_host_.data();
-        forEachFieldPair(p_, out, [&](auto& buf, auto& host, unsigned flags) {
-            if ((any != ~0u && (flags & any) == 0) || (flags & none) != 0 || buf.empty()) return;
-            using T = typename std::remove_reference_t<decltype(host)>::value_type;
-            const std::size_t n = buf.size();
-            if (stage_.size() < n * sizeof(T)) stage_.resize(n * sizeof(T));
-            copyToHostBytes(buf, stage_.data());
-            host.resize(n);
-            const unsigned char* s = stage_.data();
-            for (std::size_t i = 0; i < n; ++i) std::memcpy(&host[ids[i]], s + i * sizeof(T), sizeof(T));
-        });
+        downloadInIdOrder(p_, ids_host_, stage_, out, any, none);
     }
 
     ForceArgs forceArgs() {
@@ -542,13 +505,7 @@ private:
     Buf<std::uint16_t> moving_object_;
     Buf<physics::RigidMotionGpu> motions_, solid_motions_;
     SolidArrays<Exec::template Buffer> solid_;
-    Buf<physics::Float4> gauge_points_;
-    Buf<physics::MaxzRow> gauge_rows_;
-    Buf<physics::GaugeSample> gauge_samples_;
-    Buf<double> gauge_maxz_;
-    Buf<physics::Double3> gauge_positions_;
-    Buf<std::uint32_t> gauge_slot_of_id_;
-    std::uint32_t gauge_nids_ = 0;
+    GaugeArrays<Exec::template Buffer> gauges_;
 };
 
 }  // namespace seaspring::solver

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "physics/particle_fields.h"
@@ -82,6 +84,28 @@ void forEachFieldPair(ParticleStore<Buf>& s, HostParticles& h, F&& f) {
 #define SEASPRING_PAIR_VISIT(name, type, need, flags) f(s.name, h.name, unsigned(flags));
     SEASPRING_PARTICLE_FIELDS(SEASPRING_PAIR_VISIT)
 #undef SEASPRING_PAIR_VISIT
+}
+
+/// The fields of `s` with a flag in `any` (every field for ~0u) and none in `none`, copied to
+/// `out` in id order (the work of the device, if any, finished). Each field goes through one
+/// staging buffer the caller keeps (`stage`; `ids` takes the sorted ids), so a download every
+/// -blowupcheck steps allocates nothing and touches no fresh pages, and `out`'s vectors keep
+/// their capacity when the caller reuses it.
+template <template <typename> class Buf>
+void downloadInIdOrder(ParticleStore<Buf>& s, std::vector<std::uint32_t>& ids, std::vector<unsigned char>& stage,
+                       HostParticles& out, unsigned any, unsigned none) {
+    copyToHost(s.id, ids);
+    const std::uint32_t* id = ids.data();
+    forEachFieldPair(s, out, [&](auto& buf, auto& host, unsigned flags) {
+        if ((any != ~0u && (flags & any) == 0) || (flags & none) != 0 || buf.empty()) return;
+        using T = typename std::remove_reference_t<decltype(host)>::value_type;
+        const std::size_t n = buf.size();
+        if (stage.size() < n * sizeof(T)) stage.resize(n * sizeof(T));
+        copyToHostBytes(buf, stage.data());
+        host.resize(n);
+        const unsigned char* b = stage.data();
+        for (std::size_t i = 0; i < n; ++i) std::memcpy(&host[id[i]], b + i * sizeof(T), sizeof(T));
+    });
 }
 
 }  // namespace seaspring::solver
