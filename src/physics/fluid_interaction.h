@@ -195,21 +195,20 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     const float pressa = pa2.x, ovrhoa = pa2.y;
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
-    if constexpr (kCompact) {  // the host: the rows once, for both blocks
-        RowTable rows;
-        rows.build<Opt::dim>(psa, c, g);
-        fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                                lanes, acc, &rows);
-        if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
-            fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                                   lanes, acc, &rows);
+    struct NoRows {};
+    std::conditional_t<kCompact, RowTable, NoRows> rows;  // the host: the rows once, for both blocks
+    const RowTable* rt = nullptr;
+    if constexpr (kCompact) {
+        rows.template build<Opt::dim>(psa, c, g);
+        rt = &rows;
     } else {
-        fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                                lanes, acc);
-        if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
-            fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                                   lanes, acc);
+        (void)rows;
     }
+    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane, lanes,
+                                            acc, rt);
+    if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
+        fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                               lanes, acc, rt);
 }
 
 /// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane).
