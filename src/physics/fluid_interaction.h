@@ -291,7 +291,7 @@ SEASPRING_HD inline void boundPair(std::uint32_t j, float drx, float dry, float 
                                    const InteractionInputs& in, const FluidConstants& c, float& ar,
                                    float& visc) {
     using K = typename Opt::Kernel;
-    const float fac = K::gradFactor(rr2, c.ker);
+    const float fac = K::template gradFactor<true>(rr2, c.ker);
     const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
     const Float4 vb = in.velrho[j];
     const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;

@@ -76,7 +76,7 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const float massb = kBound ? c.massbound : c.massfluid;
     const float visco = kBound ? c.visco_bound : c.visco;
     PairTerms t;
-    const float fac = K::gradFactor(rr2, c.ker);
+    const float fac = K::template gradFactor<true>(rr2, c.ker);
     t.frx = fac * drx;
     t.fry = fac * dry;
     t.frz = fac * drz;

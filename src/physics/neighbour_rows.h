@@ -100,7 +100,10 @@ SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstan
             std::uint32_t c0, c1;
             if (!rowCells<kDim>(box, psa, y, z, gz, c, g, c0, c1)) continue;
             const float rowdy = g.cellsizef * float(box.cay - y);
-            fn(c0, c1, rowFrame(psa, rowdy, rowdz), box.cax);
+            Float4 par = rowFrame(psa, rowdy, rowdz);
+            SEASPRING_MATERIALIZE(par.y);  // once per row, not per candidate
+            SEASPRING_MATERIALIZE(par.z);
+            fn(c0, c1, par, box.cax);
         }
     }
 }

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "core/host_device.h"
+#include "physics/sph_types.h"
 
 namespace seaspring::physics {
 
@@ -47,9 +48,11 @@ struct WendlandKernel {
         const float wqq2 = wqq1 * wqq1;
         return k.awen * (2.f * qq + 1.f) * (wqq2 * wqq2);
     }
-    /// F(r) = (dW/dr)/r.
+    /// F(r) = (dW/dr)/r. kNeighbour: rr2 is a neighbour pair's (isNeighbour), whose square root
+    /// sqrtNormalRange takes with the same bits as sqrtf and fewer GPU instructions.
+    template <bool kNeighbour = false>
     SEASPRING_HD static float gradFactor(float rr2, const KernelConstants& k) {
-        const float qq = sqrtf(rr2) * k.ovh;
+        const float qq = (kNeighbour ? sqrtNormalRange(rr2) : sqrtf(rr2)) * k.ovh;
         const float wqq1 = 1.f - 0.5f * qq;
         return k.bwen * (wqq1 * wqq1 * wqq1);
     }
@@ -66,8 +69,10 @@ struct CubicKernel {
         const float wqq2 = qq * qq;
         return k.cubic_a2 * (1.f - 1.5f * wqq2 + 0.75f * (wqq2 * qq));
     }
+    /// F(r) = (dW/dr)/r; kNeighbour as WendlandKernel's.
+    template <bool kNeighbour = false>
     SEASPRING_HD static float gradFactor(float rr2, const KernelConstants& k) {
-        const float rad = sqrtf(rr2);
+        const float rad = kNeighbour ? sqrtNormalRange(rr2) : sqrtf(rr2);
         const float qq = rad * k.ovh;
         if (qq > 1.f) {
             const float wqq1 = 2.f - qq;

@@ -61,6 +61,39 @@ SEASPRING_HD inline float maxf(float a, float b) { return b > a ? b : a; }
 /// since contraction is otherwise off on both sides.
 SEASPRING_HD inline float fma32(float a, float b, float c) { return fmaf(a, b, c); }
 
+/// The range of sqrtNormalRange: [2^-100, 2^126).
+constexpr float kSqrtNormalRangeMin = 7.88860905e-31f;  // 2^-100
+constexpr float kSqrtNormalRangeEnd = 8.50705917e37f;   // 2^126
+
+/// sqrtf(x), the same bits, for x in [kSqrtNormalRangeMin, kSqrtNormalRangeEnd): for a
+/// neighbour pair's r^2, which isNeighbour keeps in [kAlmostZero, (2h)^2]. On the GPU it is the
+/// fast path of CUDA's IEEE square root alone, without the range check and the branch around
+/// it (5 of the 93 instructions of a fluid pair): an approximate reciprocal square root r
+/// (MUFU.RSQ), s = x r, then s + (x - s^2) r/2 with the residual exact in one fma. For x in the
+/// range that sequence is correctly rounded; `deviceSqrtNormalRangeMismatches` (core/device_math_check.h)
+/// compares it with sqrtf on the device for every float in the range (test
+/// DeviceMath.SqrtNormalRangeIsSqrtfForEveryFloatInRange). Outside the range the results differ
+/// (0 gives NaN): callers with r = 0 (mDBC's ghost node) use sqrtf. On the host: sqrtf.
+SEASPRING_HD_INLINE float sqrtNormalRange(float x) {
+#if defined(__CUDA_ARCH__)
+    float y;
+    asm("{\n\t"
+        ".reg .f32 r, s, h, e;\n\t"
+        "rsqrt.approx.ftz.f32 r, %1;\n\t"
+        "mul.ftz.f32 s, %1, r;\n\t"
+        "mul.ftz.f32 h, r, 0f3F000000;\n\t"
+        "neg.f32 e, s;\n\t"
+        "fma.rn.f32 e, e, s, %1;\n\t"
+        "fma.rn.f32 %0, e, h, s;\n\t"
+        "}"
+        : "=f"(y)
+        : "f"(x));
+    return y;
+#else
+    return sqrtf(x);
+#endif
+}
+
 SEASPRING_HD inline int maxi(int a, int b) { return a > b ? a : b; }
 SEASPRING_HD inline int mini(int a, int b) { return a < b ? a : b; }
 

@@ -1,10 +1,16 @@
 // SeaSpring — MIT licence.
 /// \file test_cuda_device.cpp
-/// \brief The CUDA device query. Skips, saying why, on machines without a GPU or without the
-///        CUDA backend; on a GPU machine it checks the device is a Hopper (sm_90) build target.
+/// \brief The CUDA device query, and the device's own forms of IEEE operations against them
+///        (core/device_math_check.h). Skips, saying why, on machines without a GPU or without
+///        the CUDA backend; on a GPU machine it checks the device is a Hopper (sm_90) build target.
 #include <gtest/gtest.h>
 
+#include <ios>
+
 #include "core/device_info.h"
+#include "core/device_math_check.h"
+#include "physics/sph_kernels.h"
+#include "physics/sph_types.h"
 
 TEST(CudaDevice, QueryReportsDevicesOrWhyNot) {
     std::string why;
@@ -20,4 +26,24 @@ TEST(CudaDevice, QueryReportsDevicesOrWhyNot) {
         // The build targets compute capability 9.0 (H100/H200).
         EXPECT_GE(d.major, 9) << d.name << " is sm_" << d.major << d.minor;
     }
+}
+
+// physics::sqrtNormalRange is the fast path of the GPU's IEEE square root without its range
+// check: every float of its range, about 1.9 billion, through it and through sqrtf on the device,
+// bit for bit. The control (x * rsqrt(x), the first approximation) must differ somewhere, or the
+// comparison could not see a difference. A neighbour pair's r^2 lies inside the range.
+TEST(DeviceMath, SqrtNormalRangeIsSqrtfForEveryFloatInRange) {
+    using namespace seaspring::physics;
+    static_assert(kAlmostZero >= kSqrtNormalRangeMin, "a neighbour's r^2 is inside sqrtNormalRange's range");
+    const std::uint32_t first = floatBitsToUint(kSqrtNormalRangeMin);
+    const std::uint32_t last = floatBitsToUint(kSqrtNormalRangeEnd) - 1u;
+    EXPECT_EQ(first, 0x0d800000u);  // 2^-100
+    EXPECT_EQ(last, 0x7e7fffffu);   // just below 2^126
+    const seaspring::DeviceMathCheck control = seaspring::deviceSqrtNormalRangeMismatches(first, last, true);
+    if (!control.ran) GTEST_SKIP() << "no device check: " << control.why;
+    EXPECT_GT(control.mismatches, control.checked / 100) << "the control x * rsqrt(x) should differ from sqrtf";
+    const seaspring::DeviceMathCheck r = seaspring::deviceSqrtNormalRangeMismatches(first, last);
+    ASSERT_TRUE(r.ran) << r.why;
+    EXPECT_EQ(r.checked, std::uint64_t(last - first) + 1u);
+    EXPECT_EQ(r.mismatches, 0u) << "first at bits 0x" << std::hex << r.first_mismatch_bits;
 }
