@@ -143,6 +143,10 @@ private:
 
 /// Threads of the single-block sequence kernel (block-stride loops over the indices).
 constexpr int kSequenceBlockThreads = 1024;
+/// The narrower variant of it, for sequences whose widest pass needs at most this many threads:
+/// compiled for 512 threads, it may use 128 registers per thread, where the 1024-thread kernel
+/// has 64 and spills (the solids' sub-cycle did, 156 bytes).
+constexpr int kSequenceBlockThreadsNarrow = 512;
 
 /// Runner of a sequence inside one block: each pass is a block-stride loop, then a barrier
 /// (which also orders the pass's global-memory writes before the next pass's reads).
@@ -154,8 +158,8 @@ struct BlockRun {
     }
 };
 
-template <class Body>
-__global__ void __launch_bounds__(kSequenceBlockThreads, 1) sequenceBlockKernel(Body body, const std::uint32_t* gate) {
+template <int kThreads, class Body>
+__global__ void __launch_bounds__(kThreads, 1) sequenceBlockKernel(Body body, const std::uint32_t* gate) {
     if (gateClosed(gate)) return;
     BlockRun run;
     body(run);
@@ -256,7 +260,10 @@ public:
         if (work <= block_max_) {
             // Only as many warps as the widest pass needs: the barriers then wait for fewer warps.
             const unsigned threads = unsigned(std::min<std::uint32_t>(kSequenceBlockThreads, (widest + 31u) / 32u * 32u));
-            sequenceBlockKernel<Body><<<1, threads > 0 ? threads : 32u>>>(body, gate_);
+            if (threads <= unsigned(kSequenceBlockThreadsNarrow))
+                sequenceBlockKernel<kSequenceBlockThreadsNarrow, Body><<<1, threads > 0 ? threads : 32u>>>(body, gate_);
+            else
+                sequenceBlockKernel<kSequenceBlockThreads, Body><<<1, threads>>>(body, gate_);
             SEASPRING_CUDA_LAUNCH_CHECK();
             return;
         }
