@@ -4,15 +4,19 @@
 # where a kernel's instructions go. Default: the fluid pair launch of SPHERIC Test 2 at
 # DualSPHysics' Spheric2Dam_01M.xml (1.1 M particles; symplectic, Wendland, DDT 3, artificial
 # viscosity). CASE=antoci KERNEL=sequenceBlockKernel: the solids' single-block sub-cycle of the
-# Antoci gate 2D (cases/antoci_gate2d, its own options).
+# Antoci gate 2D (cases/antoci_gate2d, its own options). CASE=liao3d: FlexStruc Liao 3D as shipped
+# (Verlet, laminar+SPS; needs build-dev/shared).
 # Env: SS_BIN (folder with seaspring and gencase, default build-dev/bin), W (work folder),
-#      CASE (spheric or antoci), KERNEL (Nsight Compute name regex, default FluidLanesPass),
+#      CASE (spheric, antoci or liao3d), KERNEL (Nsight Compute name regex, default FluidLanesPass),
 #      ARGS (physics options), SKIP (launches skipped, default 4), OUT (sass.csv and the details).
 set -u
 export LD_LIBRARY_PATH=$PWD/build-dev/lib
 b=${SS_BIN:-build-dev/bin}; w=${W:-/tmp/wfs}; out=${OUT:-$w}; mkdir -p "$w" "$out"
 nvidia-smi --query-gpu=name --format=csv,noheader
-if [[ ${CASE:-spheric} == antoci ]]; then
+if [[ ${CASE:-spheric} == liao3d ]]; then
+  name=l3d; [[ -f $w/l3d.h5 ]] || $b/gencase build-dev/shared/dualsphysics-cases/flexstruc/CaseDambreak3D_FSI_Def.xml $w/l3d >/dev/null 2>&1
+  args=${ARGS:-}; nsteps=8
+elif [[ ${CASE:-spheric} == antoci ]]; then
   name=ant; [[ -f $w/ant.h5 ]] || $b/gencase cases/antoci_gate2d/AntociGate2D_Def.xml $w/ant >/dev/null
   args=${ARGS:-}; nsteps=300
 else

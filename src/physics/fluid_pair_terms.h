@@ -126,8 +126,8 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
             t.sx = massb * (ts.xx * t.frx + ts.xy * t.fry + ts.xz * t.frz);
             t.sy = massb * (ts.xy * t.frx + ts.yy * t.fry + ts.yz * t.frz);
             t.sz = massb * (ts.xz * t.frx + ts.yz * t.fry + ts.zz * t.frz);
-            t.gv = SymTensor{0, 0, 0, 0, 0, 0};
-            if (!kBound) accumulateVelocityGradient(t.gv, dvx, dvy, dvz, t.frx, t.fry, t.frz, massb, ovrhob);
+            t.gv = kBound ? SymTensor{0, 0, 0, 0, 0, 0}
+                          : velocityGradientTerms(dvx, dvy, dvz, t.frx, t.fry, t.frz, massb, ovrhob);
         }
     }
 

@@ -27,10 +27,12 @@ struct Double3 {
     double x, y, z;
 };
 
-/// Symmetric 3x3 tensor of floats (SPS stress and velocity gradient).
-struct SymTensor {
+/// Symmetric 3x3 tensor of floats (SPS stress and velocity gradient). Aligned to 8 bytes (its
+/// size stays 24), so that the GPU loads a neighbour's stress in three 8-byte loads, not six.
+struct alignas(8) SymTensor {
     float xx, xy, xz, yy, yz, zz;
 };
+static_assert(sizeof(SymTensor) == 24, "SymTensor: six floats, no padding");
 
 /// The bits of `v` as a float (no conversion).
 SEASPRING_HD inline float uintBitsToFloat(std::uint32_t v) {

@@ -54,24 +54,23 @@ SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_r2et
     return mass_b * temp * dot_rgradw;
 }
 
-/// Accumulates the velocity-gradient sums that SPS needs (DualSPHysics' layout: xy holds
-/// du/dy + dv/dx, and so on): grad += -(m_b/rho_b) v_ab (x) grad W, symmetrised.
-SEASPRING_HD inline void accumulateVelocityGradient(SymTensor& g, float dvx, float dvy,
-                                                    float dvz, float frx, float fry, float frz,
-                                                    float mass_b, float ovrho_b) {
+/// One pair's terms of the velocity-gradient sums that SPS needs (DualSPHysics' layout: xy
+/// holds du/dy + dv/dx, and so on): -(m_b/rho_b) v_ab (x) grad W, symmetrised; the particle's
+/// sums add them (addPairTerms). Formed as values, not added into a zero tensor: 0 + a differs
+/// from a only for a = -0, and a sum that starts at +0 is never -0, so the sums' bits are those
+/// of adding into zeros, with six additions less per pair.
+SEASPRING_HD inline SymTensor velocityGradientTerms(float dvx, float dvy, float dvz, float frx, float fry,
+                                                    float frz, float mass_b, float ovrho_b) {
     const float volp2 = -mass_b * ovrho_b;
-    float dv = dvx * volp2;
-    g.xx += dv * frx;
-    g.xy += dv * fry;
-    g.xz += dv * frz;
-    dv = dvy * volp2;
-    g.xy += dv * frx;
-    g.yy += dv * fry;
-    g.yz += dv * frz;
-    dv = dvz * volp2;
-    g.xz += dv * frx;
-    g.yz += dv * fry;
-    g.zz += dv * frz;
+    const float ux = dvx * volp2, uy = dvy * volp2, uz = dvz * volp2;
+    SymTensor g;
+    g.xx = ux * frx;
+    g.xy = ux * fry + uy * frx;
+    g.xz = ux * frz + uz * frx;
+    g.yy = uy * fry;
+    g.yz = uy * frz + uz * fry;
+    g.zz = uz * frz;
+    return g;
 }
 
 /// SPS stress over density from the velocity gradient sums (DualSPHysics' ComputeSpsTau):

@@ -41,7 +41,7 @@
 ///     fails (and all 6 channel tests): TG rate 0.491 of 2 nu k^2.
 ///   Also: Blin 0.066 instead of 0.0066: the SPS stress test fails (tau_xx 10x). SPS momentum
 ///     term sign (t.sx = -massb ...): the SPS divergence test fails (a_x = -0.299 vs 0.299).
-///     accumulateVelocityGradient sign: the SPS stress test fails (xz = -G). eta2 = 0:
+///     velocityGradientTerms sign: the SPS stress test fails (xz = -G). eta2 = 0:
 ///     Taylor–Green (extrapolated rate vs lap) fails (and the channel force balance). visco x 1.1
 ///     for fluid pairs: Taylor–Green fails (and all channel tests).
 #include <gtest/gtest.h>
@@ -156,7 +156,7 @@ TEST(TaylorGreen, AmplitudeDecayConvergesToTheOperatorsViscosity) {
 namespace {
 
 /// The velocity gradient that the fluid pair loop accumulates for SPS (fluidPair with
-/// Viscosity::LaminarSps: accumulateVelocityGradient into FluidAccum::gradvel) for a particle
+/// Viscosity::LaminarSps: velocityGradientTerms summed into FluidAccum::gradvel) for a particle
 /// at the centre of a lattice in the shear u_x = gamma z, and the SPS stress spsTau makes of
 /// it with the constants of makeFluidConstants.
 template <class Opt>
