@@ -36,6 +36,9 @@ struct KernelConstants {
 
 /// Pairs closer than this (squared distance) are skipped, as DualSPHysics' ALMOSTZERO.
 constexpr float kAlmostZero = 1e-18f;
+// A neighbour's r^2, in [kAlmostZero, (2h)^2], is inside sqrtNormalRange's range (gradFactor<true>)
+// for any h below 4e18 m.
+static_assert(kAlmostZero >= kSqrtNormalRangeMin, "a neighbour's r^2 must lie in sqrtNormalRange's range");
 
 enum class KernelType { Cubic = 1, Wendland = 2 };
 
