@@ -11,7 +11,7 @@
 ///   corrector: eps = -(ar/rho^{n+1/2}) dt; rho = rho^n (2 - eps)/(2 + eps);
 ///       v = v^n + dt (a + g); x = x^{n+1/2} + dt/2 v^{n+1}, which is DualSPHysics'
 ///       x^n + dt/2 (v^n + v^{n+1}) up to rounding (in double) without keeping x^n: 24 bytes
-///       per particle less (docs/performance.md).
+///       per particle less (docs/performance-large.md).
 ///   Verlet: rho = rho^{n-1} + 2dt ar; v = v^{n-1} + 2dt (a+g); x = x^n + dt v^n + dt^2/2 (a+g);
 ///       every VerletSteps-th step Euler: rho = rho^n + dt ar; v = v^n + dt (a+g).
 /// Boundary (DBC) particles: density by the same formula, then rho = max(rho, rho0).

@@ -72,7 +72,7 @@ constexpr std::uint32_t kAutoPairLanesMax = 4;
 /// at most kAutoPairLanesMax) that give the case's fluid particles at least kPairLaneThreads
 /// lanes (4 below 49,152 fluid particles, 2 below 98,304, then 1): small cases get more GPU
 /// threads in their fluid loop. Measured on an NVIDIA H100 (tools/device_lanes.sh,
-/// docs/performance.md): 4 lanes were the fastest or within 1.5% of it from 13,860 to 39,312
+/// docs/performance-small.md): 4 lanes were the fastest or within 1.5% of it from 13,860 to 39,312
 /// fluid particles; at 115,920 two lanes were 2% slower than one, at 652,212 12% slower.
 std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
 /// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
