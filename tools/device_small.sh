@@ -12,7 +12,12 @@ export LD_LIBRARY_PATH=$PWD/build-dev/lib
 b=${SS_BIN:-build-dev/bin}; w=${W:-/tmp/w}; mkdir -p $w
 nvidia-smi --query-gpu=name --format=csv,noheader
 [[ -f $w/ant.h5 ]] || $b/gencase cases/antoci_gate2d/AntociGate2D_Def.xml $w/ant >/dev/null
-[[ -f $w/liao.h5 ]] || $b/gencase build-dev/shared-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $w/liao >/dev/null 2>&1
+liao_xml=""
+for d in build-dev/shared-cases build-dev/shared/dualsphysics-cases ../shared/dualsphysics-cases; do
+  [[ -f $d/flexstruc/CaseDambreak2D_FSI_Def.xml ]] && { liao_xml=$d/flexstruc/CaseDambreak2D_FSI_Def.xml; break; }
+done
+[[ -n $liao_xml ]] || { echo "device_small.sh: CaseDambreak2D_FSI_Def.xml not found (build-dev/shared-cases, build-dev/shared/dualsphysics-cases, ../shared)" >&2; exit 1; }
+[[ -f $w/liao.h5 ]] || $b/gencase $liao_xml $w/liao >/dev/null 2>&1
 for c in ${CASES:-ant liao}; do
   echo "== $c"
   SEASPRING_TIMERS=1 $b/seaspring -overwrite -gpu -sv:none -progress:0 -nsteps:2000 $w/$c $w/o_$c | grep -E "phase|Finished"

@@ -349,30 +349,11 @@ SEASPRING_HD inline void addSumTerm(const SolidSumTerm& u, std::uint32_t s, cons
     sum += u.term;
 }
 
-/// Pass 1 of a force evaluation at positions `ep`, for solid particle s: decides breakage of
-/// its bonds (solidSumSlot) and returns S_s = sum of (w) dl over its intact bonds in slot
-/// order; with the rows' bending, writes s's row curvatures (solidRowCurvaturesAt). `f`: time
-/// fraction for the clamp nodes. Raises s's alarm for a position that is not finite or an
-/// intact bond strained past kMaxBondStrain.
-SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st,
-                                      const SolidBonds& b, const ClampNodes& cn, double f) {
-    const Double3 p = ep[s];
-    const double crit = st.material[st.body[s]].crit_stretch;
-    const bool out_s = solidOutside(st.keep, p);
-    const double t = st.t0 + f * st.span;
-    if (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)) raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
-    const int nb = b.count[s];
-    double sum = 0.0;
-    for (int q = 0; q < nb; ++q) addSumTerm(solidSumSlot(s, q, p, out_s, crit, ep, st, b, cn, f), s, st, t, sum);
-    if (b.row_d) solidRowCurvaturesAt(s, ep, b, cn, f);
-    return sum;
-}
-
 /// Pass 1b, for clamp node c: S_c over its intact bonds. It decides each bond's breakage
-/// itself, with the bits solidSumAt decides it with at the solid end (the same length from
-/// either end, the solid particle's material and keep box), so it runs in the same pass as
-/// solidSumAt: b.broken[slot] read while the solid end may set it gives the same result
-/// either way (the old flag or'ed with the same test).
+/// itself, with the bits solidSumAt (vcpm_substep.h) decides it with at the solid end (the
+/// same length from either end, the solid particle's material and keep box), so it runs in the
+/// same pass as solidSumAt: b.broken[slot] read while the solid end may set it gives the same
+/// result either way (the old flag or'ed with the same test).
 SEASPRING_HD inline double clampSumAt(std::uint32_t c, const Double3* ep, const SolidState& st, const SolidBonds& b,
                                       const ClampNodes& cn, double f) {
     const Double3 p = clampPosAt(cn, c, f);
@@ -437,20 +418,6 @@ SEASPRING_HD inline Double3 withRowForce(std::uint32_t s, const SolidBonds& b, c
         fz += fr.z;
     }
     return Double3{fx, fy, fz};
-}
-
-/// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12), from the
-/// sums of pass 1 (solidBondForceSlot in slot order), plus the rows' bending force from its
-/// row curvatures (vcpm_rows.h).
-SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
-                                             const SolidBonds& b, const ClampNodes& cn, double f) {
-    const Double3 p = ep[s];
-    const VcpmMaterial& m = st.material[st.body[s]];
-    const double sum_s = st.sum[s];
-    const int nb = b.count[s];
-    double fx = 0.0, fy = 0.0, fz = 0.0;
-    for (int q = 0; q < nb; ++q) addForceTerm(solidBondForceSlot(s, q, p, m, sum_s, ep, st, b, cn, f), fx, fy, fz);
-    return withRowForce(s, b, m, fx, fy, fz);
 }
 
 /// After a sub-cycle, for solid particle s: raises its alarm for an intact bond strained past

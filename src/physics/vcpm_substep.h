@@ -36,6 +36,87 @@ SEASPRING_HD inline Double3 solidNonFluidForce(std::uint32_t s, const SolidState
     return fb;
 }
 
+// ---- Bond lanes: one particle's bonds on several GPU threads, the same bits -------------------
+//
+// The sub-cycle of a small solid is latency-bound: one thread per particle walks its 8 (2D) or
+// 18 (3D) bond slots one after another, each a chain of dependent loads and double square
+// roots. With `lanes` threads per particle (consecutive, aligned in a warp; lanes a power of two
+// <= 32), lane l evaluates the slots l, l + lanes, l + 2 lanes, ... in lockstep; after each
+// round lane 0 takes the other lanes' terms (valueOfLane) and folds every term in slot order,
+// raising alarms in that order: the same operations in the same order as one thread folding
+// slot after slot, so the same bits on every backend. Every lane of a group calls these; only
+// lane 0's result is meaningful, and only lane 0 writes the particle's own fields. With
+// lanes = 1 they are the one-thread functions (solidSumAt, solidBondForceAt: the host, the
+// GPU's small solids).
+
+/// Pass 1 of a force evaluation at positions `ep`, for solid particle s over `lanes` lanes
+/// (lane 0 returns S_s): decides the breakage of s's bonds (solidSumSlot) and returns
+/// S_s = sum of (w) dl over its intact bonds in slot order; with the rows' bending, writes s's row curvatures (solidRowCurvaturesAt). `f`: time
+/// fraction for the clamp nodes. Raises s's alarm for a position that is not finite or an
+/// intact bond strained past kMaxBondStrain.
+SEASPRING_HD inline double solidSumLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes, const Double3* ep,
+                                         const SolidState& st, const SolidBonds& b, const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const double crit = st.material[st.body[s]].crit_stretch;
+    const bool out_s = solidOutside(st.keep, p);
+    const double t = st.t0 + f * st.span;
+    if (lane == 0 && (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)))
+        raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
+    const int nb = b.count[s];
+    double sum = 0.0;
+    for (int q0 = 0; q0 < nb; q0 += int(lanes)) {
+        const int q = q0 + int(lane);
+        SolidSumTerm u{0.0, 0.0, 0u, 0u};
+        if (q < nb) u = solidSumSlot(s, q, p, out_s, crit, ep, st, b, cn, f);
+        if (lane == 0) addSumTerm(u, s, st, t, sum);  // q0 < nb
+        for (std::uint32_t l = 1; l < lanes; ++l) {  // every lane takes part in the exchange
+            const SolidSumTerm v = valueOfLane(u, l, lanes);
+            if (lane == 0 && q0 + int(l) < nb) addSumTerm(v, s, st, t, sum);
+        }
+    }
+    if (b.row_d) {
+        syncLanes(lanes);  // the other lanes' breakage decisions, which the row triplets read
+        if (lane == 0) solidRowCurvaturesAt(s, ep, b, cn, f);
+    }
+    return sum;
+}
+
+/// Pass 2: the total bond force on solid particle s at positions `ep` (Eq. 12) over `lanes`
+/// lanes (lane 0 returns it), from the sums of pass 1 (solidBondForceSlot in slot order), plus
+/// the rows' bending force from its row curvatures (vcpm_rows.h).
+SEASPRING_HD inline Double3 solidBondForceLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
+                                                const Double3* ep, const SolidState& st, const SolidBonds& b,
+                                                const ClampNodes& cn, double f) {
+    const Double3 p = ep[s];
+    const VcpmMaterial& m = st.material[st.body[s]];
+    const double sum_s = st.sum[s];
+    const int nb = b.count[s];
+    double fx = 0.0, fy = 0.0, fz = 0.0;
+    for (int q0 = 0; q0 < nb; q0 += int(lanes)) {
+        const int q = q0 + int(lane);
+        SolidForceTerm u{0.0, 0.0, 0.0, 0u, 0u};
+        if (q < nb) u = solidBondForceSlot(s, q, p, m, sum_s, ep, st, b, cn, f);
+        if (lane == 0) addForceTerm(u, fx, fy, fz);  // q0 < nb
+        for (std::uint32_t l = 1; l < lanes; ++l) {  // every lane takes part in the exchange
+            const SolidForceTerm v = valueOfLane(u, l, lanes);
+            if (lane == 0 && q0 + int(l) < nb) addForceTerm(v, fx, fy, fz);
+        }
+    }
+    return lane == 0 ? withRowForce(s, b, m, fx, fy, fz) : Double3{fx, fy, fz};
+}
+
+/// Pass 1 for one thread per particle (solidSumLanes with one lane).
+SEASPRING_HD inline double solidSumAt(std::uint32_t s, const Double3* ep, const SolidState& st, const SolidBonds& b,
+                                      const ClampNodes& cn, double f) {
+    return solidSumLanes(s, 0u, 1u, ep, st, b, cn, f);
+}
+
+/// Pass 2 for one thread per particle (solidBondForceLanes with one lane).
+SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep, const SolidState& st,
+                                             const SolidBonds& b, const ClampNodes& cn, double f) {
+    return solidBondForceLanes(s, 0u, 1u, ep, st, b, cn, f);
+}
+
 /// Predictor of a sub-step (Eqs. 20-21) for particle s, given its bond force `fi` at r^m
 /// (solidBondForceAt): a^m, then v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
 SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
@@ -58,14 +139,6 @@ SEASPRING_HD inline bool solidFrozenAtPredictor(std::uint32_t s, const SolidStat
     st.vel[s] = rest;
     st.pos_half[s] = st.pos[s];
     return true;
-}
-
-/// Predictor pass of a sub-step for particle s (one thread).
-SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
-                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
-                                          double gz) {
-    if (solidFrozenAtPredictor(s, st)) return;
-    solidPredictorWith(s, st, f, dt, gx, gy, gz, solidBondForceAt(s, st.pos, st, b, cn, f));
 }
 
 /// Corrector (Eqs. 22-23) for particle s, given its bond force `fi` at r^{m+1/2}:
@@ -95,77 +168,7 @@ SEASPRING_HD inline void solidCorrectorWith(std::uint32_t s, const SolidState& s
     st.pos[s] = p;
 }
 
-/// Corrector pass for particle s (one thread); a particle frozen at the predictor (outside
-/// st.keep) stays.
-SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
-                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
-                                          double gz) {
-    if (solidOutside(st.keep, st.pos[s])) return;
-    solidCorrectorWith(s, st, f, dt, gx, gy, gz, solidBondForceAt(s, st.pos_half, st, b, cn, f));
-}
-
-// ---- Bond lanes: one particle's bonds on several GPU threads, the same bits -------------------
-//
-// The sub-cycle of a small solid is latency-bound: one thread per particle walks its 8 (2D) or
-// 18 (3D) bond slots one after another, each a chain of dependent loads and double square
-// roots. With `lanes` threads per particle (consecutive, aligned in a warp; lanes a power of two
-// <= 32), lane l evaluates the slots l, l + lanes, l + 2 lanes, ... in lockstep; after each
-// round lane 0 takes the other lanes' terms (valueOfLane) and folds every term in slot order,
-// raising alarms in that order: the same operations in the same order as the one-thread
-// functions above, so the same bits on every backend. Every lane of a group calls these; only
-// lane 0's result is meaningful, and only lane 0 writes the particle's own fields.
-
-/// solidSumAt over `lanes` lanes (lane 0 returns S_s).
-SEASPRING_HD inline double solidSumLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes, const Double3* ep,
-                                         const SolidState& st, const SolidBonds& b, const ClampNodes& cn, double f) {
-    const Double3 p = ep[s];
-    const double crit = st.material[st.body[s]].crit_stretch;
-    const bool out_s = solidOutside(st.keep, p);
-    const double t = st.t0 + f * st.span;
-    if (lane == 0 && (notFinite(p.x) || notFinite(p.y) || notFinite(p.z)))
-        raiseSolidAlarm(st.alarm, s, kSolidAlarmNotFinite, p.x + p.y + p.z, t);
-    const int nb = b.count[s];
-    double sum = 0.0;
-    for (int q0 = 0; q0 < nb; q0 += int(lanes)) {
-        const int q = q0 + int(lane);
-        SolidSumTerm u{0.0, 0.0, 0u, 0u};
-        if (q < nb) u = solidSumSlot(s, q, p, out_s, crit, ep, st, b, cn, f);
-        if (lane == 0) addSumTerm(u, s, st, t, sum);  // q0 < nb
-        for (std::uint32_t l = 1; l < lanes; ++l) {  // every lane takes part in the exchange
-            const SolidSumTerm v = valueOfLane(u, l, lanes);
-            if (lane == 0 && q0 + int(l) < nb) addSumTerm(v, s, st, t, sum);
-        }
-    }
-    if (b.row_d) {
-        syncLanes(lanes);  // the other lanes' breakage decisions, which the row triplets read
-        if (lane == 0) solidRowCurvaturesAt(s, ep, b, cn, f);
-    }
-    return sum;
-}
-
-/// solidBondForceAt over `lanes` lanes (lane 0 returns the force).
-SEASPRING_HD inline Double3 solidBondForceLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
-                                                const Double3* ep, const SolidState& st, const SolidBonds& b,
-                                                const ClampNodes& cn, double f) {
-    const Double3 p = ep[s];
-    const VcpmMaterial& m = st.material[st.body[s]];
-    const double sum_s = st.sum[s];
-    const int nb = b.count[s];
-    double fx = 0.0, fy = 0.0, fz = 0.0;
-    for (int q0 = 0; q0 < nb; q0 += int(lanes)) {
-        const int q = q0 + int(lane);
-        SolidForceTerm u{0.0, 0.0, 0.0, 0u, 0u};
-        if (q < nb) u = solidBondForceSlot(s, q, p, m, sum_s, ep, st, b, cn, f);
-        if (lane == 0) addForceTerm(u, fx, fy, fz);  // q0 < nb
-        for (std::uint32_t l = 1; l < lanes; ++l) {  // every lane takes part in the exchange
-            const SolidForceTerm v = valueOfLane(u, l, lanes);
-            if (lane == 0 && q0 + int(l) < nb) addForceTerm(v, fx, fy, fz);
-        }
-    }
-    return lane == 0 ? withRowForce(s, b, m, fx, fy, fz) : Double3{fx, fy, fz};
-}
-
-/// solidPredictorAt over `lanes` lanes.
+/// Predictor pass of a sub-step for particle s over `lanes` lanes (lanes = 1: one thread).
 SEASPRING_HD inline void solidPredictorLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                              const SolidState& st, const SolidBonds& b, const ClampNodes& cn,
                                              double f, double dt, double gx, double gy, double gz) {
@@ -177,13 +180,26 @@ SEASPRING_HD inline void solidPredictorLanes(std::uint32_t s, std::uint32_t lane
     if (lane == 0) solidPredictorWith(s, st, f, dt, gx, gy, gz, fi);
 }
 
-/// solidCorrectorAt over `lanes` lanes.
+/// Corrector pass for particle s over `lanes` lanes (lanes = 1: one thread); a particle frozen
+/// at the predictor (outside st.keep) stays.
 SEASPRING_HD inline void solidCorrectorLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                              const SolidState& st, const SolidBonds& b, const ClampNodes& cn,
                                              double f, double dt, double gx, double gy, double gz) {
     if (solidOutside(st.keep, st.pos[s])) return;
     const Double3 fi = solidBondForceLanes(s, lane, lanes, st.pos_half, st, b, cn, f);
     if (lane == 0) solidCorrectorWith(s, st, f, dt, gx, gy, gz, fi);
+}
+
+/// The predictor and corrector passes for one thread per particle.
+SEASPRING_HD inline void solidPredictorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
+    solidPredictorLanes(s, 0u, 1u, st, b, cn, f, dt, gx, gy, gz);
+}
+SEASPRING_HD inline void solidCorrectorAt(std::uint32_t s, const SolidState& st, const SolidBonds& b,
+                                          const ClampNodes& cn, double f, double dt, double gx, double gy,
+                                          double gz) {
+    solidCorrectorLanes(s, 0u, 1u, st, b, cn, f, dt, gx, gy, gz);
 }
 
 }  // namespace seaspring::physics

@@ -34,26 +34,11 @@ struct ClampMotion {
     physics::Double3* pos_end = nullptr;
 };
 
-struct SolidPredictorPass {
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f, dt, gx, gy, gz;
-    SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidPredictorAt(s, st, b, cn, f, dt, gx, gy, gz); }
-};
-
-struct SolidCorrectorPass {
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f, dt, gx, gy, gz;
-    SEASPRING_HD void operator()(std::uint32_t s) const { physics::solidCorrectorAt(s, st, b, cn, f, dt, gx, gy, gz); }
-};
-
-/// Bond lanes (physics/vcpm_substep.h; the GPU's sub-cycle): index k of [0, n << kShift) is
-/// lane k mod 2^kShift of solid particle k >> kShift (kShift = 0: one thread per particle, the
-/// host). A particle's lanes are consecutive threads of one warp (every runner's indices start
-/// at 0 and its blocks are whole warps). A compile-time constant, so the lanes' loops unroll.
+/// Bond lanes (physics/vcpm_substep.h; the GPU's sub-cycle of large solids): index k of
+/// [0, n << kShift) is lane k mod 2^kShift of solid particle k >> kShift. kShift = 0 is one
+/// thread per particle (the host, the GPU's single-block sub-cycle). A particle's lanes are
+/// consecutive threads of one warp (every runner's indices start at 0 and its blocks are whole
+/// warps). A compile-time constant, so the lanes' loops unroll (and vanish for one lane).
 template <std::uint32_t kShift>
 struct BondLanes {
     static constexpr std::uint32_t shift = kShift;
@@ -62,9 +47,9 @@ struct BondLanes {
     SEASPRING_HD static constexpr std::uint32_t lane(std::uint32_t k) { return k & (lanes() - 1u); }
 };
 
-/// The predictor (kCorrector false) or the corrector pass of a sub-step with bond lanes.
+/// The predictor (kCorrector false) or the corrector pass of a sub-step.
 template <std::uint32_t kShift, bool kCorrector>
-struct SolidStepLanesPass {
+struct SolidStepPass {
     physics::SolidState st;
     physics::SolidBonds b;
     physics::ClampNodes cn;
@@ -110,32 +95,13 @@ struct SubCycleContact {
 };
 
 /// The first pass of a force evaluation at positions `ep`: the sums S of the solid particles
-/// (indices [0, b.n): physics::solidSumAt, which decides the bonds' breakage) and of the clamp
-/// nodes ([b.n, b.n + cn.n): physics::clampSumAt decides its bonds' breakage with the same
-/// bits, so it needs no pass of its own); with contact, each solid particle's contact force
-/// too (it reads positions and velocities, which no part of this pass writes).
-struct SolidSumsPass {
-    const physics::Double3* ep;
-    physics::SolidState st;
-    physics::SolidBonds b;
-    physics::ClampNodes cn;
-    double f;
-    SubCycleContact ct;
-    SEASPRING_HD void operator()(std::uint32_t i) const {
-        if (i < b.n) {
-            st.sum[i] = physics::solidSumAt(i, ep, st, b, cn, f);
-            if (ct.on) ct.force[i] = physics::contactForceAt(i, ep, st, ct.w, ct.cp, ct.cl);
-        } else {
-            cn.sum[i - b.n] = physics::clampSumAt(i - b.n, ep, st, b, cn, f);
-        }
-    }
-};
-
-/// SolidSumsPass with bond lanes: indices [0, b.n << shift) the solid particles' lanes
-/// (physics::solidSumLanes; lane 0 writes S and the contact force), then one index per clamp
-/// node.
+/// (indices [0, b.n << kShift), their bond lanes: physics::solidSumLanes, which decides the
+/// bonds' breakage; lane 0 writes S) and of the
+/// clamp nodes (one index each after them: physics::clampSumAt decides its bonds' breakage with
+/// the same bits, so it needs no pass of its own); with contact, each solid particle's contact
+/// force too (lane 0; it reads positions and velocities, which no part of this pass writes).
 template <std::uint32_t kShift>
-struct SolidSumsLanesPass {
+struct SolidSumsPass {
     const physics::Double3* ep;
     physics::SolidState st;
     physics::SolidBonds b;
@@ -216,7 +182,7 @@ struct SolidSubCycle {
     int n;
     double dt, gx, gy, gz;
     SubCycleContact ct;
-    BondLanes<kShift> bl;  ///< shift 0: one thread per particle (the host); else the lanes passes
+    BondLanes<kShift> bl;  ///< shift 0: one thread per particle
     SolidToBoundaryPass to_boundary;  ///< the last pass: the end state into the boundary block
 
 #if defined(__CUDACC__)
@@ -226,21 +192,13 @@ struct SolidSubCycle {
     SEASPRING_HD void operator()(Run& run) const {
         run(cn.n + (ct.on ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct});
         const double inv_n = 1.0 / double(n);
-        const std::uint32_t nsums = b.n + cn.n;
         const std::uint32_t nl = b.n << bl.shift;
         for (int m = 0; m < n; ++m) {
             const double f0 = double(m) * inv_n, fh = (double(m) + 0.5) * inv_n;
-            if constexpr (kShift == 0) {
-                run(nsums, SolidSumsPass{st.pos, st, b, cn, f0, ct});
-                run(b.n, SolidPredictorPass{st, b, cn, f0, dt, gx, gy, gz});
-                run(nsums, SolidSumsPass{st.pos_half, st, b, cn, fh, ct});
-                run(b.n, SolidCorrectorPass{st, b, cn, fh, dt, gx, gy, gz});
-            } else {
-                run(nl + cn.n, SolidSumsLanesPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
-                run(nl, SolidStepLanesPass<kShift, false>{st, b, cn, f0, dt, gx, gy, gz, bl});
-                run(nl + cn.n, SolidSumsLanesPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
-                run(nl, SolidStepLanesPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
-            }
+            run(nl + cn.n, SolidSumsPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
+            run(nl, SolidStepPass<kShift, false>{st, b, cn, f0, dt, gx, gy, gz, bl});
+            run(nl + cn.n, SolidSumsPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
+            run(nl, SolidStepPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
         }
         run(b.n, to_boundary);  // in the same launch as the sub-steps when they run in one block
     }

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "physics/vcpm.h"
+#include "physics/vcpm_substep.h"
 #include "physics/vcpm_surface.h"
 #include "solver/solid_arrays.h"
 #include "solver/solid_setup.h"

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "physics/vcpm.h"
+#include "physics/vcpm_substep.h"
 #include "solver/solid_arrays.h"
 #include "solver/solid_setup.h"
 #include "solver/solid_stability.h"

@@ -16,6 +16,7 @@
 #include "core/vec3.h"
 #include "gencase/vcpm_bonds.h"
 #include "physics/vcpm.h"
+#include "physics/vcpm_substep.h"
 
 namespace seaspring::test {
 
