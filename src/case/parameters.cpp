@@ -175,7 +175,12 @@ SolverParameters readParameters(const ParameterTable& t) {
     p.vcpm_row_bending = t.choice("VcpmRowBending", {0, 1}, "0 none, 1 the rows' own bending (with VcpmSurfaceCorrection 1)");
     if (p.vcpm_row_bending == 1 && p.vcpm_surface_correction == 0)
         t.fail("VcpmRowBending", "needs VcpmSurfaceCorrection 1 (the rows' bending is part of the surface correction)");
-    p.vcpm_substep_bound = t.choice("VcpmSubStepBound", {0, 1}, "0 Gershgorin's bounds, 1 the bodies' largest stiffness eigenvalues");
+    p.vcpm_substep_bound = t.choice("VcpmSubStepBound", {-1, 0, 1},
+                                    "-1 auto (1 with VcpmRowBending 1, else 0), 0 Gershgorin's bounds, 1 the bodies' "
+                                    "largest stiffness eigenvalues");
+    // The rows' bending stiffens the short waves of thin bodies beyond what Gershgorin's ratio
+    // allows for (docs/vcpm.md, "The rows' own bending"): with it, the exact factor by default.
+    if (p.vcpm_substep_bound < 0) p.vcpm_substep_bound = p.vcpm_row_bending == 1 ? 1 : 0;
     p.time_out = t.atLeast("TimeOut", 0, false);
     if (t.number("TimeOutExtra") > 0)
         t.fail("TimeOutExtra",

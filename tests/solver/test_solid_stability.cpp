@@ -144,7 +144,8 @@ TEST(SolidStability, SubStepFactorIsTheExactEigenvalueRatio) {
     }
 }
 
-// VcpmSubStepBound 1 puts the eigenvalue factor into the set-up (the default keeps Gershgorin's).
+// VcpmSubStepBound 1 puts the eigenvalue factor into the set-up (the default keeps Gershgorin's
+// without the rows' bending).
 TEST(SolidStability, SubStepBoundOneUsesTheEigenvalueFactor) {
     const std::string def = test::readFile(test::caseDef("cantilever2d/Cantilever2D_Def.xml"));
     const solver::SolidSetup g = solver::makeSolidSetup(
@@ -166,7 +167,8 @@ TEST(SolidStability, SubStepBoundOneUsesTheEigenvalueFactor) {
 // the rows) is at most the exact one from power iteration and within 3% of it, and Gershgorin's
 // row sums grow with the rows' k_r c c^T terms, so its factor falls below the one without them
 // (measured 0.7662 against 0.8554; eigenvalue 0.7755, exact 0.7833). Broken on purpose (the
-// rows left out of Gershgorin's sums): the last check fails.
+// rows left out of Gershgorin's sums): the last check fails. The rows' set-up takes the
+// eigenvalue factor by default (VcpmSubStepBound -1).
 TEST(SolidStability, RowBendingIsInBothSubStepFactors) {
     const std::string def = test::readFile(test::caseDef("cantilever2d/Cantilever2D_Def.xml"));
     const solver::SolidSetup plain = solver::makeSolidSetup(
@@ -176,6 +178,11 @@ TEST(SolidStability, RowBendingIsInBothSubStepFactors) {
         test::replaceOnce(def, "<parameters>", "<parameters><parameter key=\"VcpmRowBending\" value=\"1\" />"), 0.005)));
     ASSERT_FALSE(rows.row_slot.empty());
     ASSERT_TRUE(plain.row_slot.empty());
+    // VcpmSubStepBound's default (-1, auto) takes the eigenvalue factor with the rows and
+    // Gershgorin's without them.
+    ASSERT_EQ(rows.dt_scale.size(), 1u);
+    EXPECT_EQ(rows.dt_scale[0], solver::eigenSubStepScales(rows)[0]);
+    EXPECT_EQ(plain.dt_scale[0], solver::gershgorinSubStepScales(plain)[0]);
     const double bulk = solver::plainBulkStiffnessPerBody(rows)[0];
     const double exact = std::min(1.0, std::sqrt(bulk / largestStiffness(rows)));
     const double eigen = solver::eigenSubStepScales(rows)[0];

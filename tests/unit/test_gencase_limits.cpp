@@ -115,7 +115,7 @@ TEST(GencaseLimits, RejectsWhatTheSolverWouldReject) {
                "key=\"StepAlgorithm\" value=\"7\": is not supported by seaspring");
     EXPECT_HAS(errorWith("bound", "<parameter key=\"Visco\"",
                          "<parameter key=\"VcpmSubStepBound\" value=\"2\"/><parameter key=\"Visco\""),
-               "key=\"VcpmSubStepBound\" value=\"2\": is not supported by seaspring (supported: 0 Gershgorin");
+               "key=\"VcpmSubStepBound\" value=\"2\": is not supported by seaspring (supported: -1 auto");
     EXPECT_HAS(errorWith("rows", "<parameter key=\"Visco\"",
                          "<parameter key=\"VcpmSurfaceCorrection\" value=\"0\"/><parameter key=\"VcpmRowBending\" "
                          "value=\"1\"/><parameter key=\"Visco\""),
