@@ -59,7 +59,9 @@ struct SolverParameters {
     double vcpm_contact_friction = 0;     ///< Coulomb friction coefficient
     int vcpm_surface_correction = 1;      ///< 1: surface correction of the lattice (physics/vcpm_surface.h); 0: plain
     int vcpm_row_bending = 0;             ///< 1: the rows' own bending, with the surface correction (physics/vcpm_rows.h)
-    int vcpm_substep_bound = 0;           ///< the corrected lattice's sub-step factor: 0 Gershgorin, 1 eigenvalue (solver/solid_stability.h); VcpmSubStepBound -1 (auto, the default) resolves to 1 with the rows' bending, else 0
+    /// The corrected lattice's sub-step factor: 0 Gershgorin, 1 eigenvalue (solver/solid_stability.h);
+    /// VcpmSubStepBound -1 (auto, the default) resolves to 1 with the rows' bending, else 0.
+    int vcpm_substep_bound = 0;
 };
 
 /// An axis-aligned box [m].

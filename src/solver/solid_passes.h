@@ -96,10 +96,10 @@ struct SubCycleContact {
 
 /// The first pass of a force evaluation at positions `ep`: the sums S of the solid particles
 /// (indices [0, b.n << kShift), their bond lanes: physics::solidSumLanes, which decides the
-/// bonds' breakage; lane 0 writes S) and of the
-/// clamp nodes (one index each after them: physics::clampSumAt decides its bonds' breakage with
-/// the same bits, so it needs no pass of its own); with contact, each solid particle's contact
-/// force too (lane 0; it reads positions and velocities, which no part of this pass writes).
+/// bonds' breakage; lane 0 writes S) and of the clamp nodes (one index each after them:
+/// physics::clampSumAt decides its bonds' breakage with the same bits, so it needs no pass of
+/// its own); with contact, each solid particle's contact force too (lane 0; it reads positions
+/// and velocities, which no part of this pass writes).
 template <std::uint32_t kShift>
 struct SolidSumsPass {
     const physics::Double3* ep;
