@@ -181,13 +181,14 @@ public:
     }
     void solidSave() override {
         noForcesAhead("solidSave");
-        solid_.save();
+        if (solid_.n == 0) return;
+        exec_.template forEach<LaunchDefault>(0u, solid_.snapshotRange(), solid_.savePass());
     }
-    void solidRestore() override {
+    void solidRestore() override {  // the saved state, and on into the boundary block, in one pass
         noForcesAhead("solidRestore");
         if (solid_.n == 0) return;
-        solid_.restore();
-        solidToBoundary(0.0, false);
+        const SolidToBoundaryPass boundary = solidToBoundaryPass(solid_, solidViews(), 0.0, false);
+        exec_.template forEach<LaunchDefault>(0u, solid_.snapshotRange(), solid_.restorePass(boundary));
     }
 
     void boundaryForces(std::vector<physics::Double3>& out) override {

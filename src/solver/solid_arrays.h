@@ -8,12 +8,14 @@
 /// The container interface is in buffers.h.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "physics/vcpm.h"
 #include "solver/backend.h"
 #include "solver/buffers.h"
+#include "solver/solid_passes.h"
 
 namespace seaspring::solver {
 
@@ -66,11 +68,14 @@ struct SolidArrays {
         assignFrom(row_slot, s.row_slot);
         assignFrom(row_d, std::vector<physics::Double3>(std::size_t(row_axes) * n, zero3));
         assignFrom(broken, std::vector<std::uint8_t>(s.flags.size(), 0));
+        assignFrom(broken_saved, std::vector<std::uint8_t>(s.flags.size(), 0));
         assignFrom(body, s.body);
         assignFrom(materials, s.materials);
         assignFrom(pos, s.pos);
         assignFrom(pos_half, s.pos);
+        assignFrom(pos_saved, s.pos);
         assignFrom(vel, s.vel);
+        assignFrom(vel_saved, s.vel);
         assignFrom(vel0, s.vel);
         assignFrom(fluid_force, std::vector<physics::Double3>(n, zero3));
         assignFrom(sum, std::vector<double>(n, 0.0));
@@ -87,7 +92,9 @@ struct SolidArrays {
             assignFrom(contact_force, std::vector<physics::Double3>(n, zero3));
             assignFrom(contact_pos0, s.pos);
             assignFrom(contact_impulse, std::vector<physics::Double3>(n, zero3));
+            assignFrom(contact_impulse_saved, std::vector<physics::Double3>(n, zero3));
             assignFrom(contact_work, std::vector<double>(n, 0.0));
+            assignFrom(contact_work_saved, std::vector<double>(n, 0.0));
         }
         assignFrom(slot, std::vector<std::uint32_t>(n, 0));
         assignFrom(clamp_count, s.clamp_count);
@@ -191,26 +198,12 @@ struct SolidArrays {
         f("contact_work", contact_work);
     }
 
-    /// Snapshot of the midpoint coupling: positions, velocities and bond states ...
-    void save() {
-        copyBuffer(pos_saved, pos);
-        copyBuffer(vel_saved, vel);
-        copyBuffer(broken_saved, broken);
-        if (contact_on) {
-            copyBuffer(contact_impulse_saved, contact_impulse);
-            copyBuffer(contact_work_saved, contact_work);
-        }
-    }
-    /// ... and back to it.
-    void restore() {
-        copyBuffer(pos, pos_saved);
-        copyBuffer(vel, vel_saved);
-        copyBuffer(broken, broken_saved);
-        if (contact_on) {
-            copyBuffer(contact_impulse, contact_impulse_saved);
-            copyBuffer(contact_work, contact_work_saved);
-        }
-    }
+    /// The midpoint coupling's snapshot, one pass over [0, snapshotRange()) each way: the
+    /// state into the saved arrays (savePass), and back from them and on into the boundary
+    /// block (restorePass; `boundary` the copy into it, which reads the restored arrays).
+    std::uint32_t snapshotRange() const { return std::max<std::uint32_t>(n, std::uint32_t(broken.size())); }
+    SolidSnapshotPass savePass() { return snapshot(false, SolidToBoundaryPass{}); }
+    SolidSnapshotPass restorePass(const SolidToBoundaryPass& boundary) { return snapshot(true, boundary); }
 
     /// The solid part of HostState (solid-index order, slot-major bond states).
     void download(HostState& out) const {
@@ -224,6 +217,28 @@ struct SolidArrays {
             copyToHost(contact_impulse, out.contact_impulse);
             copyToHost(contact_work, out.contact_work);
         }
+    }
+
+private:
+    SolidSnapshotPass snapshot(bool restore, const SolidToBoundaryPass& boundary) {
+        SolidSnapshotPass p{};
+        p.n = n;
+        p.slots = std::uint32_t(broken.size());
+        p.pos_from = restore ? pos_saved.data() : pos.data();
+        p.pos_to = restore ? pos.data() : pos_saved.data();
+        p.vel_from = restore ? vel_saved.data() : vel.data();
+        p.vel_to = restore ? vel.data() : vel_saved.data();
+        p.broken_from = restore ? broken_saved.data() : broken.data();
+        p.broken_to = restore ? broken.data() : broken_saved.data();
+        if (contact_on) {
+            p.contact_impulse_from = restore ? contact_impulse_saved.data() : contact_impulse.data();
+            p.contact_impulse_to = restore ? contact_impulse.data() : contact_impulse_saved.data();
+            p.contact_work_from = restore ? contact_work_saved.data() : contact_work.data();
+            p.contact_work_to = restore ? contact_work.data() : contact_work_saved.data();
+        }
+        p.to_boundary = restore;
+        p.boundary = boundary;
+        return p;
     }
 };
 

@@ -84,6 +84,36 @@ struct SolidToBoundaryPass {
     }
 };
 
+/// The midpoint coupling's snapshot of a solid (SolidArrays::snapshotPass): positions,
+/// velocities, bond states and, with contact, the contact ledger copied from the `from` arrays
+/// to the `to` arrays over indices [0, max(n, slots)); on the way back (`to_boundary`), each
+/// restored particle's state then goes into the boundary block in the same pass (it reads only
+/// its own index). One launch where there were three copies (and a fourth launch).
+struct SolidSnapshotPass {
+    std::uint32_t n, slots;
+    const physics::Double3 *pos_from, *vel_from;
+    physics::Double3 *pos_to, *vel_to;
+    const std::uint8_t* broken_from;
+    std::uint8_t* broken_to;
+    const physics::Double3* contact_impulse_from;  ///< null without contact
+    physics::Double3* contact_impulse_to;
+    const double* contact_work_from;
+    double* contact_work_to;
+    bool to_boundary;
+    SolidToBoundaryPass boundary;  ///< reads pos_to and vel_to (the arrays restored)
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        if (i < slots) broken_to[i] = broken_from[i];
+        if (i >= n) return;
+        pos_to[i] = pos_from[i];
+        vel_to[i] = vel_from[i];
+        if (contact_impulse_to) {
+            contact_impulse_to[i] = contact_impulse_from[i];
+            contact_work_to[i] = contact_work_from[i];
+        }
+        if (to_boundary) boundary(i);
+    }
+};
+
 /// The contact views of a sub-cycle (`on` false: no contact).
 struct SubCycleContact {
     bool on = false;
