@@ -178,7 +178,7 @@ constexpr std::uint32_t kSequenceBlockMaxDefault = 2048;
 /// Bond lanes (physics/vcpm_substep.h) of the sub-cycle's passes on the GPU: a solid that runs
 /// in one block (above) keeps one thread per particle; one that runs a launch per pass gets
 /// the most lanes, up to 8, that keep nsolid x lanes <= kBondLaneThreads. Measured on an H100
-/// (tools/device_bondlanes.sh, docs/performance-small.md): the Antoci gate (395 particles, one block)
+/// (tools/device_bondlanes.sh, docs/performance-solids.md): the Antoci gate (395 particles, one block)
 /// 1.08x slower with 2 lanes, 1.25x with 4; FlexStruc Liao 2D (one block) 0.97-1.06x; in
 /// launches per pass, the FlexStruc Liao 3D plate (12,250) 0.82x with 2, 0.73x with 4, 0.70x
 /// with 8; a 3D bar of 6,169 particles 0.73x / 0.59x / 0.56x; one of 48,625 0.87x with 2,
