@@ -71,13 +71,15 @@ __device__ T loadCoherent(const T* p) {
 
 /// Reduction in one launch: each block combines a grid-stride share of [b, e) (CUB's block
 /// reduction) into parts[block]; the last block to finish (an integer ticket, `done`, reset for the
-/// next call) combines the blocks' results into *out. Only exact combines are used (see
-/// CudaExec::reduce), so which block comes last changes nothing. Under a closed gate the result
-/// is `init` and f is not called.
+/// next call) combines the blocks' results into *out and, when host_out is not null, into
+/// *host_out too (pinned host memory, which a kernel writes directly: no copy on the stream
+/// after it; the host reads it once the kernel is seen complete). Only exact combines are used
+/// (see CudaExec::reduce), so which block comes last changes nothing. Under a closed gate the
+/// result is `init` and f is not called.
 template <class T, class F, class C>
 __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, std::uint32_t e, T init, F f,
                                                               C combine, T* parts, unsigned* done, T* out,
-                                                              const std::uint32_t* gate) {
+                                                              T* host_out, const std::uint32_t* gate) {
     // A block's values combined by CUB (warp shuffles, then the warps' results): a fixed shape,
     // and only exact combines are used, so the result is the same in any order.
     using BlockReduce = cub::BlockReduce<T, kReduceThreads, cub::BLOCK_REDUCE_WARP_REDUCTIONS>;
@@ -101,6 +103,7 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     r = BlockReduce(tmp).Reduce(r, combine);  // tmp is free again: the barrier above follows its last use
     if (threadIdx.x == 0) {
         *out = r;
+        if (host_out != nullptr) *host_out = r;
         *done = 0u;
     }
 }
@@ -110,9 +113,9 @@ __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::ui
                                  std::uint32_t* out);
 
 /// A reduction's result on its way to the host (CudaExec::reduceDeferred): in a device word
-/// of its own (device(): what a gate reads), then an asynchronous copy into pinned memory and
-/// an event. get() waits for the event; when a later readback has synchronised the device in
-/// the meantime, it does not wait at all.
+/// of its own (device(): what a gate reads) and, written by the same kernel, in pinned host
+/// memory, then an event. get() waits for the event; when a later readback has synchronised
+/// the device in the meantime, it does not wait at all.
 template <class T>
 class DeferredValue {
 public:
@@ -232,24 +235,22 @@ public:
     /// combine(..., f(i)) over [b, e) from `init` in one launch (reduceKernel: up to 4 blocks
     /// per SM, fewer for short ranges, the last block combining the blocks' results); `combine`
     /// must be exact, commutative and associative, so the shape changes no result. Synchronises
-    /// (the result comes back through pinned memory).
+    /// (the kernel writes the result into pinned memory).
     template <class T, class F, class C>
     T reduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine) const {
         static_assert(sizeof(T) <= kReadbackBytes, "a reduction value fits the pinned readback");
-        const T* result = launchReduce(b, e, init, f, combine, static_cast<T*>(nullptr));
-        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), result, sizeof(T), cudaMemcpyDeviceToHost));
+        launchReduce(b, e, init, f, combine, static_cast<T*>(nullptr), static_cast<T*>(readback_.get()));
         SEASPRING_CUDA_CHECK(cudaStreamSynchronize(0));
         T r;
         std::memcpy(&r, readback_.get(), sizeof r);
         return r;
     }
 
-    /// reduce() without waiting: the result goes to out.device() and follows the kernel to the
-    /// host (out.get() waits).
+    /// reduce() without waiting: the result goes to out.device() and, from the same kernel, to
+    /// the host (out.get() waits for the kernel).
     template <class T, class F, class C>
     void reduceDeferred(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, Deferred<T>& out) const {
-        const T* result = launchReduce(b, e, init, f, combine, out.dev_.data());
-        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(out.host_, result, sizeof(T), cudaMemcpyDeviceToHost));
+        launchReduce(b, e, init, f, combine, out.dev_.data(), out.host_);
         SEASPRING_CUDA_CHECK(cudaEventRecord(out.done_));
     }
 
@@ -305,10 +306,11 @@ public:
 private:
     /// Throws when a gate is set (what cannot be gated).
     void ungated(const char* what) const;
-    /// Launches the reduction; returns where its result will be on the device (`out`, or the
-    /// scratch's last slot when null).
+    /// Launches the reduction; its result goes to `out` on the device (the scratch's last slot
+    /// when null) and to `host_out` in pinned host memory (none when null).
     template <class T, class F, class C>
-    const T* launchReduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, T* out) const {
+    void launchReduce(std::uint32_t b, std::uint32_t e, T init, const F& f, const C& combine, T* out,
+                      T* host_out) const {
         const std::uint64_t per_block = std::uint64_t(kReduceThreads) * kReducePerThread;
         const unsigned blocks = unsigned(std::max<std::uint64_t>(
             1, std::min<std::uint64_t>(reduce_blocks_, (std::uint64_t(e > b ? e - b : 0) + per_block - 1) / per_block)));
@@ -316,9 +318,9 @@ private:
         if (reduce_scratch_.size() < need) reduce_scratch_.resize(need);
         T* parts = reinterpret_cast<T*>(reduce_scratch_.data());
         if (out == nullptr) out = parts + blocks;
-        reduceKernel<T, F, C><<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data(), out, gate_);
+        reduceKernel<T, F, C>
+            <<<blocks, kReduceThreads>>>(b, e, init, f, combine, parts, reduce_done_.data(), out, host_out, gate_);
         SEASPRING_CUDA_LAUNCH_CHECK();
-        return out;
     }
 
     struct GridRun {
