@@ -157,9 +157,10 @@ public:
                     bool ledger) override {
         noForcesAhead("solidSteps");
         if (solid_.n == 0) return;
-        if (n > 0)  // it ends with solidToBoundary's pass
+        if (n > 0)  // it ends with solidToBoundary's pass (and, with the ledger, the end checks)
             runSolidSubCycle(exec_, solid_, solid_motions_, solidViews(), t0, dt, n, motions, ledger);
         else solidToBoundary(0.0, ledger);
+        solid_end_checked_ = n > 0 && ledger;
     }
     std::uint32_t solidsPastBounds() override {
         if (solid_.n == 0) return 0;
@@ -171,9 +172,10 @@ public:
         if (solid_.n == 0) return;
         exec_.reduceDeferred(0u, solid_.n, 0u,
                              SolidAlarmPass{solid_.state(), solid_.bonds(), solid_.clamps(),
-                                            solidContactViews(solid_, solidViews())},
+                                            solidContactViews(solid_, solidViews()), solid_end_checked_},
                              CountCombine{}, solid_check_);
         solid_check_started_ = true;
+        solid_end_checked_ = false;
     }
     double solidMaxSpeed() override {
         if (solid_.n == 0) return 0.0;
@@ -189,6 +191,7 @@ public:
         if (solid_.n == 0) return;
         const SolidToBoundaryPass boundary = solidToBoundaryPass(solid_, solidViews(), 0.0, false);
         exec_.template forEach<LaunchDefault>(0u, solid_.snapshotRange(), solid_.restorePass(boundary));
+        solid_end_checked_ = false;  // other positions: the check, when asked, runs in full
     }
 
     void boundaryForces(std::vector<physics::Double3>& out) override {
@@ -269,6 +272,7 @@ public:
 
     void loadState(const CheckpointData& in) override {
         dropForcesAhead();
+        solid_end_checked_ = false;
         auto expect = [&](const char* name, long long want) {
             const long long got = in.integer(std::string("engine/") + name);
             if (got != want)
@@ -490,6 +494,9 @@ private:
     typename Exec::template Deferred<physics::DtMaxima> dt_ahead_;  ///< divideThenForces' dt maxima
     ForcesAhead ahead_;
     bool solid_check_started_ = false;
+    /// The last sub-cycle ran the per-step test's checks at the current positions (SolidEndPass):
+    /// startSolidsCheck then only counts the alarms.
+    bool solid_end_checked_ = false;
     BackendSetup setup_;
     std::uint32_t nbound_ = 0, nfluid_ = 0;
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)

@@ -58,6 +58,8 @@ SolidToBoundaryPass solidToBoundaryPass(SolidArrays<Buf>& s, const SolidBlockVie
 /// n solid sub-steps of dt from t0 (clamp nodes moved by `motions` over the whole interval,
 /// uploaded into `motion_buf` when a clamp moves), ending with the copy into the boundary
 /// block: one SolidSubCycle run by exec.sequence with the bond lanes exec.bondLaneShift picks.
+/// With `ledger` (a step's own cycle, not the midpoint's half step) its last pass also runs
+/// the per-step blow-up test's checks, which Backend::startSolidsCheck then only counts.
 template <class Exec, template <typename> class Buf, class MotionBuf>
 void runSolidSubCycle(const Exec& exec, SolidArrays<Buf>& s, MotionBuf& motion_buf,
                       const SolidBlockViews& w, double t0, double dt, int n,
@@ -76,7 +78,7 @@ void runSolidSubCycle(const Exec& exec, SolidArrays<Buf>& s, MotionBuf& motion_b
     const SubCycleContact ct = solidContactViews(s, w);
     auto cycle = [&](auto bl) {
         const SolidSubCycle<decltype(bl)::shift> body{s.state(), s.bonds(), s.clamps(), cm, n, dt, w.gx, w.gy, w.gz, ct,
-                                                      bl, solidToBoundaryPass(s, w, dt * n, ledger)};
+                                                      bl, solidToBoundaryPass(s, w, dt * n, ledger), ledger};
         exec.sequence(std::uint64_t(s.n) + s.nclamp, (s.n << bl.shift) + s.nclamp, body);  // widest: the sums
     };
     switch (exec.bondLaneShift(std::uint64_t(s.n) + s.nclamp, s.n)) {  // 0 on the host

@@ -170,17 +170,46 @@ struct SubCycleStartPass {
     }
 };
 
-/// Value pass of the per-step blow-up test (physics::solidAlarmAfterSubCycleAt: 1 for a
-/// particle whose alarm is raised; it writes only its own alarm), summed with CountCombine:
-/// integers, exact in any order.
+/// The per-step blow-up test of solid particle s at the end of a sub-cycle: with contact, its
+/// motion against its contact list (physics::contactMotionAlarmAt), then its bonds at the end
+/// positions (physics::solidAlarmAfterSubCycleAt); it writes only s's alarm. 1 when s's alarm
+/// is raised.
+SEASPRING_HD inline std::uint32_t solidEndCheckAt(std::uint32_t s, const physics::SolidState& st,
+                                                  const physics::SolidBonds& b, const physics::ClampNodes& cn,
+                                                  const SubCycleContact& ct) {
+    if (ct.on) physics::contactMotionAlarmAt(s, st, ct.cp, ct.cl);
+    return physics::solidAlarmAfterSubCycleAt(s, st, b, cn);
+}
+
+/// Value pass of the per-step blow-up test, summed with CountCombine (integers, exact in any
+/// order): solidEndCheckAt, or, when the sub-cycle's last pass already ran it at these
+/// positions (`checked`: SolidEndPass), only whether s's alarm is raised.
 struct SolidAlarmPass {
     physics::SolidState st;
     physics::SolidBonds b;
     physics::ClampNodes cn;
     SubCycleContact ct;
+    bool checked;
     SEASPRING_HD std::uint32_t operator()(std::uint32_t s) const {
-        if (ct.on) physics::contactMotionAlarmAt(s, st, ct.cp, ct.cl);
-        return physics::solidAlarmAfterSubCycleAt(s, st, b, cn);
+        if (checked) return st.alarm[s].kind != physics::kSolidAlarmNone ? 1u : 0u;
+        return solidEndCheckAt(s, st, b, cn, ct);
+    }
+};
+
+/// The last pass of a sub-cycle: the solid's end state into the boundary block and, with
+/// `check` (the sub-cycles the per-step test follows), the test's checks of each particle
+/// (solidEndCheckAt), in the same launch. Each reads the end positions, which no pass writes
+/// after the last corrector, and writes only its own index.
+struct SolidEndPass {
+    SolidToBoundaryPass to_boundary;
+    bool check;
+    physics::SolidState st;
+    physics::SolidBonds b;
+    physics::ClampNodes cn;
+    SubCycleContact ct;
+    SEASPRING_HD void operator()(std::uint32_t s) const {
+        to_boundary(s);
+        if (check) solidEndCheckAt(s, st, b, cn, ct);
     }
 };
 
@@ -202,7 +231,8 @@ struct CountCombine {
 /// Clamp motion (and the contact lists), then n sub-steps of dt (fractions of the interval
 /// computed with IEEE division and product, so every runner has the same bits); with contact,
 /// the contact force in the sums pass of each evaluation; last, the solid's end state into the
-/// boundary block (SolidToBoundaryPass, with the ledger's impulse and work over the cycle).
+/// boundary block (SolidToBoundaryPass, with the ledger's impulse and work over the cycle) and,
+/// with check_end, the per-step blow-up test's checks (SolidEndPass).
 template <std::uint32_t kShift>
 struct SolidSubCycle {
     physics::SolidState st;
@@ -214,6 +244,7 @@ struct SolidSubCycle {
     SubCycleContact ct;
     BondLanes<kShift> bl;  ///< shift 0: one thread per particle
     SolidToBoundaryPass to_boundary;  ///< the last pass: the end state into the boundary block
+    bool check_end;  ///< the last pass also runs the per-step test's checks (SolidEndPass)
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
@@ -230,7 +261,7 @@ struct SolidSubCycle {
             run(nl + cn.n, SolidSumsPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
             run(nl, SolidStepPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
         }
-        run(b.n, to_boundary);  // in the same launch as the sub-steps when they run in one block
+        run(b.n, SolidEndPass{to_boundary, check_end, st, b, cn, ct});  // in the sub-steps' launch in one block
     }
 };
 
