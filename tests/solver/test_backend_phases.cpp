@@ -21,6 +21,7 @@
 #include "solver/blowup_check.h"
 #include "solver/gauge_system.h"
 #include "solver/motion_player.h"
+#include "backend_kinds.h"
 #include "solver_test_util.h"
 
 using namespace seaspring;
@@ -28,27 +29,10 @@ using solver::Backend;
 
 namespace {
 
-struct Cpu2 {
-    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(2); }
-};
-struct Cpu3 {
-    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(3); }
-};
-struct Gpu {
-    static std::unique_ptr<Backend> make(std::string& why) { return solver::makeCudaBackend(0, why); }
-};
-/// The GPU with 4 and 8 threads per solid particle in the sub-cycle (bond lanes,
-/// physics/vcpm_substep.h; the default is 2): the same bits as the CPU's one thread.
-template <int kLanes>
-struct GpuBondLanes {
-    static std::unique_ptr<Backend> make(std::string& why) {
-        const std::string lanes = std::to_string(kLanes);
-        setenv("SEASPRING_BOND_LANES", lanes.c_str(), 1);
-        std::unique_ptr<Backend> b = solver::makeCudaBackend(0, why);
-        unsetenv("SEASPRING_BOND_LANES");
-        return b;
-    }
-};
+using test::Cpu2;
+using test::Cpu3;
+using test::Gpu;
+using test::GpuBondLanes;
 
 template <typename T>
 bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {

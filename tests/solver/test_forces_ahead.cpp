@@ -23,6 +23,7 @@
 #include <string>
 
 #include "solver/state_hash.h"
+#include "backend_kinds.h"
 #include "solver_test_util.h"
 
 using namespace seaspring;
@@ -30,12 +31,8 @@ using solver::Backend;
 
 namespace {
 
-struct Cpu2 {
-    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(2); }
-};
-struct Gpu {
-    static std::unique_ptr<Backend> make(std::string& why) { return solver::makeCudaBackend(0, why); }
-};
+using test::Cpu2;
+using test::Gpu;
 
 template <class Kind>
 class ForcesAhead : public ::testing::Test {

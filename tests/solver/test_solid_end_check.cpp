@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <memory>
 #include <string>
 
 #include "physics/blowup_bounds.h"
 #include "solver/motion_player.h"
+#include "backend_kinds.h"
 #include "solver_test_util.h"
 
 using namespace seaspring;
@@ -23,22 +23,9 @@ using solver::Backend;
 
 namespace {
 
-struct Cpu2 {
-    static std::unique_ptr<Backend> make(std::string&) { return solver::makeCpuBackend(2); }
-};
-struct Gpu {
-    static std::unique_ptr<Backend> make(std::string& why) { return solver::makeCudaBackend(0, why); }
-};
-struct GpuBondLanes2 {  // the sub-cycle as one launch per pass, two threads per particle
-    static std::unique_ptr<Backend> make(std::string& why) {
-        setenv("SEASPRING_BOND_LANES", "2", 1);
-        setenv("SEASPRING_SOLID_BLOCK_MAX", "0", 1);
-        std::unique_ptr<Backend> b = solver::makeCudaBackend(0, why);
-        unsetenv("SEASPRING_BOND_LANES");
-        unsetenv("SEASPRING_SOLID_BLOCK_MAX");
-        return b;
-    }
-};
+using test::Cpu2;
+using test::Gpu;
+using GpuBondLanes2 = test::GpuBondLanes<2, true>;  // the sub-cycle as one launch per pass, two threads per particle
 
 template <class Kind>
 class SolidEndCheck : public ::testing::Test {};
