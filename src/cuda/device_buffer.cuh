@@ -118,13 +118,6 @@ template <typename T>
 void assignFrom(DeviceBuffer<T>& dst, const std::vector<T>& src) {
     dst.upload(src);
 }
-/// Device-to-device copy, queued on the default stream.
-template <typename T>
-void copyBuffer(DeviceBuffer<T>& dst, const DeviceBuffer<T>& src) {
-    dst.resize(src.size());
-    if (!src.empty())
-        SEASPRING_CUDA_CHECK(cudaMemcpyAsync(dst.data(), src.data(), src.size() * sizeof(T), cudaMemcpyDeviceToDevice));
-}
 template <typename T>
 void copyToHost(const DeviceBuffer<T>& src, std::vector<T>& dst) {
     src.download(dst);

@@ -21,11 +21,6 @@ template <typename T>
 void assignFrom(std::vector<T>& dst, const std::vector<T>& src) {
     dst = src;
 }
-/// dst = a copy of src (same container kind; device to device on the GPU).
-template <typename T>
-void copyBuffer(std::vector<T>& dst, const std::vector<T>& src) {
-    dst = src;
-}
 /// dst = the contents of src, on the host.
 template <typename T>
 void copyToHost(const std::vector<T>& src, std::vector<T>& dst) {
