@@ -17,19 +17,20 @@
 #pragma once
 
 #include "core/host_device.h"
+#include "physics/sph_types.h"
 
 namespace seaspring::physics {
 
 enum class DensityDiffusion { None = 0, Molteni = 1, Fourtakas = 2, FourtakasFull = 3 };
 
-/// (1 + e)^(1/7) - 1 for small e, in float, by its Taylor series to third order (Horner,
-/// multiplications and additions only: the same bits on every backend; no cancellation, as
+/// (1 + e)^(1/7) - 1 for small e, in float, by its Taylor series to third order (Horner with
+/// fused multiply-adds, fma32: the same bits on every backend; no cancellation, as
 /// there would be in computing (1 + e)^(1/7) and subtracting 1). The first omitted term,
 /// (65/2401) e^4, is < 2.2e-8 for |e| <= 0.03; the hydrostatic range is
 /// |e| = rho0 g |dz| / B = gamma g |dz| / c0^2 ~ 1e-3 over 2h.
 SEASPRING_HD inline float seventhRootMinusOne(float e) {
     // Binomial coefficients of (1+e)^(1/7): 1/7, -3/49, 13/343.
-    return e * (0.142857143f + e * (-0.0612244898f + e * 0.0379008746f));
+    return e * fma32(e, fma32(e, 0.0379008746f, -0.0612244898f), 0.142857143f);
 }
 
 /// Hydrostatic density difference rhoH_ab = rho0 ((1 + ddtgz drz)^(1/7) - 1), with

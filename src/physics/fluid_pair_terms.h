@@ -123,9 +123,9 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
                 ts.xx += tb.xx; ts.xy += tb.xy; ts.xz += tb.xz;
                 ts.yy += tb.yy; ts.yz += tb.yz; ts.zz += tb.zz;
             }
-            t.sx = massb * (ts.xx * t.frx + ts.xy * t.fry + ts.xz * t.frz);
-            t.sy = massb * (ts.xy * t.frx + ts.yy * t.fry + ts.yz * t.frz);
-            t.sz = massb * (ts.xz * t.frx + ts.yz * t.fry + ts.zz * t.frz);
+            t.sx = massb * fma32(ts.xx, t.frx, fma32(ts.xy, t.fry, ts.xz * t.frz));
+            t.sy = massb * fma32(ts.xy, t.frx, fma32(ts.yy, t.fry, ts.yz * t.frz));
+            t.sz = massb * fma32(ts.xz, t.frx, fma32(ts.yz, t.fry, ts.zz * t.frz));
             t.gv = kBound ? SymTensor{0, 0, 0, 0, 0, 0}
                           : velocityGradientTerms(dvx, dvy, dvz, t.frx, t.fry, t.frz, massb, ovrhob);
         }
