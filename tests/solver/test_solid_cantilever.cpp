@@ -26,12 +26,7 @@ using namespace seaspring;
 
 namespace {
 
-using test::brokenSlots;
 using test::caseDef;
-using test::dist;
-using test::finite;
-using test::readFile;
-using test::replaceOnce;
 using test::scratch;
 
 /// Oscillation of a sampled signal about its mean: the crossings of the mean (linear
@@ -134,10 +129,10 @@ CantileverResult runCantilever(double dp, bool plane_stress = false, bool surfac
         for (std::uint32_t i : tip) u += st.pos[i].z - p0[i].z;
         ts.push_back(t);
         zs.push_back(u / double(tip.size()));
-        for (std::uint32_t i = first; i < first + n; ++i) res.finite = res.finite && finite(st.pos[i]);
+        for (std::uint32_t i = first; i < first + n; ++i) res.finite = res.finite && test::finite(st.pos[i]);
     });
     res.osc = analyseOscillation(ts, zs);
-    res.broken_slots = brokenSlots(r.state);
+    res.broken_slots = test::brokenSlots(r.state);
     return res;
 }
 
