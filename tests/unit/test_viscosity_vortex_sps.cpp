@@ -25,7 +25,8 @@
 ///     the field stays the TG mode within 1e-8 U (1e-5).
 ///   SPS, uniform shear: gradvel xz / gamma = 0.997399 (2D), 1.000619 (3D), equal to the hand
 ///     lattice sum within 5e-7 (1e-5); tau against the hand Smagorinsky values within 1e-6
-///     relative (1e-5); the SPS momentum term of a linear tau field within 4e-7 (1e-5).
+///     relative (1e-5); the SPS momentum term of a linear tau field within 4e-7 (1e-5), and of
+///     a 3D field with every component linear in x, y and z within 9e-7 (1e-5).
 ///   Run time: Taylor–Green 0.39 s, the SPS tests under 1 ms (measured when these tests and
 ///   those of test_viscosity_channels.cpp were one executable, 1.2 s in all).
 ///
@@ -41,6 +42,8 @@
 ///     fails (and all 6 channel tests): TG rate 0.491 of 2 nu k^2.
 ///   Also: Blin 0.066 instead of 0.0066: the SPS stress test fails (tau_xx 10x). SPS momentum
 ///     term sign (t.sx = -massb ...): the SPS divergence test fails (a_x = -0.299 vs 0.299).
+///     tau_xz in the place of tau_xy in t.sx, or tau_xz in the place of tau_yz in t.sy (twelfth
+///     session): only the 3D divergence test fails (a_x 0.420 vs 0.530; a_y 0.090 vs -0.350).
 ///     velocityGradientTerms sign: the SPS stress test fails (xz = -G). eta2 = 0:
 ///     Taylor–Green (extrapolated rate vs lap) fails (and the channel force balance). visco x 1.1
 ///     for fluid pairs: Taylor–Green fails (and all channel tests).
@@ -284,5 +287,65 @@ TEST(Sps, StressDivergenceOfALinearStressField) {
     // Float: the odd parts (+-2 T1 za terms, about twice the result each) cancel to ~1e-7 of
     // each term; 1e-5 relative.
     EXPECT_NEAR(acc.ax, ax, 1e-5 * std::fabs(ax));
+    EXPECT_NEAR(acc.az, az, 1e-5 * std::fabs(az));
+}
+
+TEST(Sps, StressDivergenceOfAGeneralLinearStressField3D) {
+    // The same term in 3D with every component of tau/rho linear in x, y and z, each with its own
+    // slopes (s[c][k] = d tau_c / d x_k), so that every component meets every gradient
+    // direction: a_i = rho0 grad sum_j d tau_ij / d x_j, i.e.
+    //   a_x = rho0 grad (xx_x + xy_y + xz_z), a_y = rho0 grad (xy_x + yy_y + yz_z),
+    //   a_z = rho0 grad (xz_x + yz_y + zz_z)
+    // (the lattice's second moment sum m_b F r_j r_k is grad delta_jk by cubic symmetry). The 2D
+    // test above never multiplies xy, yy or yz by a non-zero gradient component. Broken on
+    // purpose (tau_xz in the place of tau_xy in t.sx): a_x = 4.2 instead of 5.3 (x rho0 grad
+    // 1e-4): fails. Tolerance 1e-5 relative, as the 2D test: float sums of about 120 pairs whose
+    // odd parts (the particle's own tau, about 3 times the result) cancel.
+    const double dp = 0.01, hdp = 1.5;
+    const double s[6][3] = {{1.1, -0.7, 0.4}, {0.3, 1.9, -1.3}, {-0.6, 0.8, 2.3},   // xx, xy, xz
+                            {0.5, -1.7, 0.9}, {1.4, 0.2, -2.1}, {-0.9, 1.2, 2.7}};  // yy, yz, zz
+    const double ra[3] = {0.21, 0.34, 0.27};
+    auto tauAt = [&](double x, double y, double z) {
+        float v[6];
+        for (int c = 0; c < 6; ++c) v[c] = float(1e-4 * (s[c][0] * x + s[c][1] * y + s[c][2] * z));
+        return SymTensor{v[0], v[1], v[2], v[3], v[4], v[5]};
+    };
+    const FluidConstants c = makeConstants(dp, hdp, 3, 1e-6);
+    const int n = int(std::ceil(2.0 * hdp));
+    std::vector<Float4> velrho;
+    std::vector<Float2> press;
+    std::vector<SymTensor> taus;
+    struct Pair3 {
+        std::uint32_t j;
+        float drx, dry, drz, rr2;
+    };
+    std::vector<Pair3> nb;
+    for (int k = -n; k <= n; ++k)
+        for (int j = -n; j <= n; ++j)
+            for (int i = -n; i <= n; ++i) {
+                const float drx = float(-i * dp), dry = float(-j * dp), drz = float(-k * dp);
+                const float rr2 = fma32(drx, drx, fma32(dry, dry, drz * drz));
+                velrho.push_back(Float4{0, 0, 0, float(kRho0)});
+                press.push_back(Float2{0.f, float(1.0 / kRho0)});
+                taus.push_back(tauAt(ra[0] + i * dp, ra[1] + j * dp, ra[2] + k * dp));
+                if (isNeighbour(rr2, c)) nb.push_back(Pair3{std::uint32_t(velrho.size() - 1), drx, dry, drz, rr2});
+            }
+    InteractionInputs in;
+    in.velrho = velrho.data();
+    in.press_ovrho = press.data();
+    in.tau = taus.data();
+    const SymTensor taua = tauAt(ra[0], ra[1], ra[2]);
+    FluidAccum acc;
+    for (const Pair3& p : nb)
+        fluidPair<OptSps3, false>(p.j, p.drx, p.dry, p.drz, p.rr2, Float4{0, 0, 0, float(kRho0)},
+                                  float(1.0 / kRho0), 0.f, taua, in, c, acc);
+    const double g = kRho0 * 1e-4 * handLatticeSums(hdp, 3).grad;
+    const double ax = g * (s[0][0] + s[1][1] + s[2][2]);
+    const double ay = g * (s[1][0] + s[3][1] + s[4][2]);
+    const double az = g * (s[2][0] + s[4][1] + s[5][2]);
+    std::printf("[sps divergence 3D] a = (%.6e, %.6e, %.6e), hand (%.6e, %.6e, %.6e), relative (%.1e, %.1e, %.1e)\n",
+                acc.ax, acc.ay, acc.az, ax, ay, az, acc.ax / ax - 1, acc.ay / ay - 1, acc.az / az - 1);
+    EXPECT_NEAR(acc.ax, ax, 1e-5 * std::fabs(ax));
+    EXPECT_NEAR(acc.ay, ay, 1e-5 * std::fabs(ay));
     EXPECT_NEAR(acc.az, az, 1e-5 * std::fabs(az));
 }
