@@ -26,7 +26,9 @@
 ///   SPS, uniform shear: gradvel xz / gamma = 0.997399 (2D), 1.000619 (3D), equal to the hand
 ///     lattice sum within 5e-7 (1e-5); tau against the hand Smagorinsky values within 1e-6
 ///     relative (1e-5); the SPS momentum term of a linear tau field within 4e-7 (1e-5), and of
-///     a 3D field with every component linear in x, y and z within 9e-7 (1e-5).
+///     a 3D field with every component linear in x, y and z within 9e-7 (1e-5); the six
+///     velocity-gradient sums of a general linear 3D flow within 1e-6 relative (1e-5 of the
+///     largest).
 ///   Run time: Taylor–Green 0.39 s, the SPS tests under 1 ms (measured when these tests and
 ///   those of test_viscosity_channels.cpp were one executable, 1.2 s in all).
 ///
@@ -44,6 +46,9 @@
 ///     term sign (t.sx = -massb ...): the SPS divergence test fails (a_x = -0.299 vs 0.299).
 ///     tau_xz in the place of tau_xy in t.sx, or tau_xz in the place of tau_yz in t.sy (twelfth
 ///     session): only the 3D divergence test fails (a_x 0.420 vs 0.530; a_y 0.090 vs -0.350).
+///     The yz velocity-gradient term formed as uy frz + uz frx: the general-flow test fails (and
+///     test_physics_kernels' term test); t.gv.xz added into gradvel.yz: it and the uniform-shear
+///     test fail.
 ///     velocityGradientTerms sign: the SPS stress test fails (xz = -G). eta2 = 0:
 ///     Taylor–Green (extrapolated rate vs lap) fails (and the channel force balance). visco x 1.1
 ///     for fluid pairs: Taylor–Green fails (and all channel tests).
@@ -348,4 +353,61 @@ TEST(Sps, StressDivergenceOfAGeneralLinearStressField3D) {
     EXPECT_NEAR(acc.ax, ax, 1e-5 * std::fabs(ax));
     EXPECT_NEAR(acc.ay, ay, 1e-5 * std::fabs(ay));
     EXPECT_NEAR(acc.az, az, 1e-5 * std::fabs(az));
+}
+
+TEST(Sps, VelocityGradientSumsOfAGeneralLinearFlow3D) {
+    // The SPS velocity-gradient sums (velocityGradientTerms summed by addPairTerms into
+    // FluidAccum::gradvel) for v = L r with all nine entries of L = dv_i/dx_j non-zero and
+    // distinct: by the lattice's cubic symmetry each sum is grad times its continuum value,
+    //   xx = L_xx, yy = L_yy, zz = L_zz, xy = L_xy + L_yx, xz = L_xz + L_zx, yz = L_yz + L_zy
+    // (DualSPHysics' layout, as in the uniform-shear test above, which has only xz). Tolerance
+    // 1e-5 of the largest (float sums of about 120 pairs, rounding about 1e-7 each). Broken on
+    // purpose (addPairTerms adding t.gv.xz into gradvel.yz, or yz formed as uy frz + uz frx):
+    // fails.
+    const double dp = 0.01, hdp = 1.5, gamma = 20.0;
+    const double L[3][3] = {{1.3, 0.4, -0.8}, {1.1, -0.9, 0.6}, {0.5, 1.7, 0.7}};
+    const double ra[3] = {0.21, 0.34, 0.27};
+    auto velAt = [&](double x, double y, double z) {
+        const double r[3] = {x, y, z};
+        float v[3];
+        for (int i = 0; i < 3; ++i) v[i] = float(gamma * (L[i][0] * r[0] + L[i][1] * r[1] + L[i][2] * r[2]));
+        return Float4{v[0], v[1], v[2], float(kRho0)};
+    };
+    const FluidConstants c = makeConstants(dp, hdp, 3, 1e-6);
+    const int n = int(std::ceil(2.0 * hdp));
+    std::vector<Float4> velrho;
+    std::vector<Float2> press;
+    std::vector<SymTensor> taus;
+    InteractionInputs in;
+    FluidAccum acc;
+    const Float4 va = velAt(ra[0], ra[1], ra[2]);
+    for (int pass = 0; pass < 2; ++pass)  // fill the arrays, then sum over the neighbours
+        for (int k = -n, b = 0; k <= n; ++k)
+            for (int j = -n; j <= n; ++j)
+                for (int i = -n; i <= n; ++i, ++b) {
+                    if (pass == 0) {
+                        velrho.push_back(velAt(ra[0] + i * dp, ra[1] + j * dp, ra[2] + k * dp));
+                        press.push_back(Float2{0.f, float(1.0 / kRho0)});
+                        taus.push_back(SymTensor{0, 0, 0, 0, 0, 0});
+                        continue;
+                    }
+                    in.velrho = velrho.data();
+                    in.press_ovrho = press.data();
+                    in.tau = taus.data();
+                    const float drx = float(-i * dp), dry = float(-j * dp), drz = float(-k * dp);
+                    const float rr2 = fma32(drx, drx, fma32(dry, dry, drz * drz));
+                    if (!isNeighbour(rr2, c)) continue;
+                    fluidPair<OptSps3, false>(std::uint32_t(b), drx, dry, drz, rr2, va, float(1.0 / kRho0), 0.f,
+                                              SymTensor{0, 0, 0, 0, 0, 0}, in, c, acc);
+                }
+    const double g = gamma * handLatticeSums(hdp, 3).grad;
+    const SymTensor& got = acc.gradvel;
+    const double want[6] = {g * L[0][0], g * (L[0][1] + L[1][0]), g * (L[0][2] + L[2][0]),
+                            g * L[1][1], g * (L[1][2] + L[2][1]), g * L[2][2]};
+    const float have[6] = {got.xx, got.xy, got.xz, got.yy, got.yz, got.zz};
+    const char* names[6] = {"xx", "xy", "xz", "yy", "yz", "zz"};
+    for (int q = 0; q < 6; ++q) {
+        std::printf("[sps gradient 3D] %s = %.6e (hand %.6e)\n", names[q], have[q], want[q]);
+        EXPECT_NEAR(have[q], want[q], 1e-5 * g * 2.3) << names[q];
+    }
 }
