@@ -1,0 +1,83 @@
+// SeaSpring — MIT licence.
+/// \file test_density_diffusion.cpp
+/// \brief The density diffusion terms of the continuity equation (density_diffusion.h, through
+///        the solver's pair function fluidPair) against the Laplacian they discretise: on a
+///        lattice at rest with the density rho0 + A z^2 (no gravity, so Fourtakas' hydrostatic
+///        term is zero), the particle at z = 0 gains
+///          D_a = delta 2h c0 A lap,
+///        lap = the hand lattice sum of viscosity_lattice.h (-sum F r_z^2 r^2/(r^2 + eta^2), the
+///        same sum that the Laplacian of a quadratic field gives the Lo & Shao term; 0.985 in
+///        the continuum limit's place of 1), i.e. delta h c0 times the Laplacian 2A, positive:
+///        density flows into the minimum. Molteni's (rho_a/rho_b - 1) and Fourtakas'
+///        ((rho_b - rho_a) - rhoH)/rho_b with a minus sign are the same ratio here.
+///
+/// Tolerance 2e-3 relative: (rho_a - rho_b)/rho_b differs from the first-order A r_z^2/rho0 by
+/// the factor rho0/rho_b, 1 - A r_z^2/rho0 >= 1 - 1e-3 over the support (A = 1000 kg/m^4, r_z <=
+/// 2h = 0.03 m); float rounding of the ratios (about 1e-4 relative each) averages out.
+/// Measured: -4.3e-4 (Molteni) and -3.4e-4 (Fourtakas).
+///
+/// Broken on purpose: Molteni's ratio as (1 - rho_a/rho_b) (anti-diffusion), or Fourtakas'
+/// (rho_a - rho_b) in place of (rho_b - rho_a): the test fails, the term's sign flipped
+/// (relative difference -2). The Fourtakas test of test_physics_kernels.cpp only checks that the
+/// term vanishes in a hydrostatic column, which a sign cannot change.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "viscosity_lattice.h"
+
+using namespace seaspring::physics;
+using namespace seaspring::test::visc;
+
+namespace {
+
+using OptMolteni2 = FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::Molteni, 2>;
+using OptFourtakas2 = FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::Fourtakas, 2>;
+
+/// D_a of the particle at z = 0 of a 2D lattice at rest with density rho0 + a z^2.
+template <class Opt>
+double diffusionAtTheMinimum(double dp, double hdp, double delta, double a) {
+    FluidConstants c = makeConstants(dp, hdp, 2, 0.0);
+    c.ddtkh = float(delta * 2.0 * hdp * dp);
+    c.ddtgz = 0.f;  // no gravity: no hydrostatic part
+    const int n = int(std::ceil(2.0 * hdp));
+    std::vector<Float4> velrho;
+    std::vector<Float2> press;
+    std::vector<Pair> nb;
+    for (int k = -n; k <= n; ++k)
+        for (int i = -n; i <= n; ++i) {
+            const float drx = float(-i * dp), drz = float(-k * dp);
+            const float rr2 = fma32(drx, drx, drz * drz);
+            const double zb = k * dp;
+            const float rho = float(kRho0 + a * zb * zb);
+            velrho.push_back(Float4{0, 0, 0, rho});
+            press.push_back(Float2{0.f, 1.f / rho});
+            if (isNeighbour(rr2, c)) nb.push_back(Pair{std::uint32_t(velrho.size() - 1), drx, drz, rr2});
+        }
+    InteractionInputs in;
+    in.velrho = velrho.data();
+    in.press_ovrho = press.data();
+    FluidAccum acc;
+    const float rhoa = float(kRho0);
+    for (const Pair& p : nb)
+        fluidPair<Opt, false>(p.j, p.drx, 0.f, p.drz, p.rr2, Float4{0, 0, 0, rhoa}, 1.f / rhoa, 0.f,
+                              SymTensor{0, 0, 0, 0, 0, 0}, in, c, acc);
+    return acc.delta;
+}
+
+}  // namespace
+
+TEST(DensityDiffusion, MolteniAndFourtakasDiffuseAQuadraticDensityLikeItsLaplacian) {
+    const double dp = 0.01, hdp = 1.5, delta = 0.1, a = 1000.0;
+    const double c0 = makeConstants(dp, hdp, 2, 0.0).cs0;
+    const double want = delta * 2.0 * hdp * dp * c0 * a * handLatticeSums(hdp, 2).lap;
+    const double molteni = diffusionAtTheMinimum<OptMolteni2>(dp, hdp, delta, a);
+    const double fourtakas = diffusionAtTheMinimum<OptFourtakas2>(dp, hdp, delta, a);
+    std::printf("[ddt] D_a: Molteni %.6e, Fourtakas %.6e, hand delta 2h c0 A lap %.6e (%.1e, %.1e)\n", molteni,
+                fourtakas, want, molteni / want - 1, fourtakas / want - 1);
+    EXPECT_GT(want, 0.0);
+    EXPECT_NEAR(molteni, want, 2e-3 * want);
+    EXPECT_NEAR(fourtakas, want, 2e-3 * want);
+}
