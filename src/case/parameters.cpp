@@ -172,9 +172,14 @@ SolverParameters readParameters(const ParameterTable& t) {
     if (p.vcpm_contact_damping > 1) t.fail("VcpmContactDamping", "is a fraction of critical damping: must be <= 1");
     p.vcpm_contact_friction = t.atLeast("VcpmContactFriction", 0, true);
     p.vcpm_surface_correction = t.choice("VcpmSurfaceCorrection", {0, 1}, "0 none (the plain lattice), 1 surface correction (springs, volumetric weights, clamp bonds)");
-    p.vcpm_row_bending = t.choice("VcpmRowBending", {0, 1}, "0 none, 1 the rows' own bending (with VcpmSurfaceCorrection 1)");
+    p.vcpm_row_bending = t.choice("VcpmRowBending", {-1, 0, 1},
+                                  "-1 auto (1 with VcpmSurfaceCorrection 1, else 0), 0 none, 1 the rows' own bending "
+                                  "(with VcpmSurfaceCorrection 1)");
     if (p.vcpm_row_bending == 1 && p.vcpm_surface_correction == 0)
         t.fail("VcpmRowBending", "needs VcpmSurfaceCorrection 1 (the rows' bending is part of the surface correction)");
+    // The rows' bending completes the surface correction (docs/vcpm.md, "The rows' own bending"):
+    // on with it by default.
+    if (p.vcpm_row_bending < 0) p.vcpm_row_bending = p.vcpm_surface_correction;
     p.vcpm_substep_bound = t.choice("VcpmSubStepBound", {-1, 0, 1},
                                     "-1 auto (1 with VcpmRowBending 1, else 0), 0 Gershgorin's bounds, 1 the bodies' "
                                     "largest stiffness eigenvalues");

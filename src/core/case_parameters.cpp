@@ -70,7 +70,7 @@ const std::vector<ParameterInfo>& knownParameters() {
         {"VcpmContactFriction", "0", K::Number, "VCPM contact Coulomb friction coefficient (SeaSpring)"},
         {"LaminarLatticeCorrection", "1", K::Number, "laminar viscosity 0:DualSPHysics' operator (1.1-1.5% weak on the particle lattice), 1:that bias divided out (SeaSpring)"},
         {"VcpmSurfaceCorrection", "1", K::Number, "VCPM surface correction 0:none (the plain lattice), 1:surface springs, volumetric weights and clamp bonds (SeaSpring)"},
-        {"VcpmRowBending", "0", K::Number, "VCPM rows' own bending with the surface correction 0:off, 1:on (SeaSpring)"},
+        {"VcpmRowBending", "-1", K::Number, "VCPM rows' own bending -1:auto (1 with VcpmSurfaceCorrection 1, else 0), 0:off, 1:on (SeaSpring)"},
         {"VcpmSubStepBound", "-1", K::Number, "VCPM sub-step factor of the corrected lattice -1:auto (1 with VcpmRowBending 1, else 0), 0:Gershgorin's bounds, 1:the bodies' largest stiffness eigenvalues (SeaSpring)"},
     };
     return table;

@@ -145,9 +145,11 @@ TEST(SolidStability, SubStepFactorIsTheExactEigenvalueRatio) {
 }
 
 // VcpmSubStepBound 1 puts the eigenvalue factor into the set-up (the default keeps Gershgorin's
-// without the rows' bending).
+// without the rows' bending, here switched off).
 TEST(SolidStability, SubStepBoundOneUsesTheEigenvalueFactor) {
-    const std::string def = test::readFile(test::caseDef("cantilever2d/Cantilever2D_Def.xml"));
+    const std::string def = test::replaceOnce(test::readFile(test::caseDef("cantilever2d/Cantilever2D_Def.xml")),
+                                              "<parameters>",
+                                              "<parameters><parameter key=\"VcpmRowBending\" value=\"0\" />");
     const solver::SolidSetup g = solver::makeSolidSetup(
         solver::loadSolverCase(test::generateCase(test::scratch("stab_bound0"), "cl", def, 0.005)));
     const solver::SolidSetup e = solver::makeSolidSetup(solver::loadSolverCase(test::generateCase(
@@ -168,14 +170,15 @@ TEST(SolidStability, SubStepBoundOneUsesTheEigenvalueFactor) {
 // row sums grow with the rows' k_r c c^T terms, so its factor falls below the one without them
 // (measured 0.7662 against 0.8554; eigenvalue 0.7755, exact 0.7833). Broken on purpose (the
 // rows left out of Gershgorin's sums): the last check fails. The rows' set-up takes the
-// eigenvalue factor by default (VcpmSubStepBound -1).
+// eigenvalue factor by default (VcpmSubStepBound -1). The rows are on by default with the
+// surface correction (VcpmRowBending -1): the case's own parameters have them.
 TEST(SolidStability, RowBendingIsInBothSubStepFactors) {
     const std::string def = test::readFile(test::caseDef("cantilever2d/Cantilever2D_Def.xml"));
-    const solver::SolidSetup plain = solver::makeSolidSetup(
-        solver::loadSolverCase(test::generateCase(test::scratch("stab_norows"), "cl", def, 0.005)));
-    const solver::SolidSetup rows = solver::makeSolidSetup(solver::loadSolverCase(test::generateCase(
-        test::scratch("stab_rows"), "cl",
-        test::replaceOnce(def, "<parameters>", "<parameters><parameter key=\"VcpmRowBending\" value=\"1\" />"), 0.005)));
+    const solver::SolidSetup plain = solver::makeSolidSetup(solver::loadSolverCase(test::generateCase(
+        test::scratch("stab_norows"), "cl",
+        test::replaceOnce(def, "<parameters>", "<parameters><parameter key=\"VcpmRowBending\" value=\"0\" />"), 0.005)));
+    const solver::SolidSetup rows = solver::makeSolidSetup(
+        solver::loadSolverCase(test::generateCase(test::scratch("stab_rows"), "cl", def, 0.005)));
     ASSERT_FALSE(rows.row_slot.empty());
     ASSERT_TRUE(plain.row_slot.empty());
     // VcpmSubStepBound's default (-1, auto) takes the eigenvalue factor with the rows and
