@@ -13,14 +13,16 @@
 #  4. liao: DualSPHysics' FlexStruc Liao 2D case as shipped (shared/dualsphysics-cases), plate
 #     top's horizontal displacement (tools/solid_marker.py; series in $OUT/liao2d_top_sc*.csv).
 # Writes $OUT/surface.txt. Usage: tools/device_surface.sh [parity|cantilever|plate|beam|liao]...
-# SC_LIST (default "0 1"): the lattices compared: 0 plain, 1 corrected (the default, without the
-# rows' bending), 1r1 corrected with the rows' bending (VcpmRowBending 1). PARITY_SC (default 1):
+# SC_LIST (default "0 1"): the lattices compared: 0 plain, 1 corrected (the default: with the rows'
+# bending since 2026-11-27), 1r0 corrected without the rows' bending (VcpmRowBending 0), 1r1 with
+# them (VcpmRowBending 1, the default's bits). PARITY_SC (default 1):
 # the lattice of the parity part.
 set -uo pipefail
 SC_LIST=${SC_LIST:-0 1}
 scparams() {  # the <parameter> lines of one SC_LIST entry
   case $1 in
     1r1) echo '<parameter key="VcpmSurfaceCorrection" value="1" /><parameter key="VcpmRowBending" value="1" />' ;;
+    1r0) echo '<parameter key="VcpmSurfaceCorrection" value="1" /><parameter key="VcpmRowBending" value="0" />' ;;
     *) echo "<parameter key=\"VcpmSurfaceCorrection\" value=\"$1\" />" ;;
   esac
 }
