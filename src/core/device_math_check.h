@@ -1,7 +1,8 @@
 // SeaSpring — MIT licence.
 /// \file device_math_check.h
 /// \brief Checks, on the device, that the GPU's own forms of IEEE operations give their bits:
-///        physics::sqrtNormalRange against sqrtf for every float of a range.
+///        physics::sqrtNormalRange against sqrtf and physics::reciprocalNormalRange against its
+///        definition (reciprocalNormalRangeSpec) for every float of a range.
 #pragma once
 
 #include <cstdint>
@@ -22,5 +23,11 @@ struct DeviceMathCheck {
 /// first CUDA device. `rough`: the first approximation x * rsqrt(x) instead of sqrtNormalRange,
 /// the check's control (it must find mismatches).
 DeviceMathCheck deviceSqrtNormalRangeMismatches(std::uint32_t first_bits, std::uint32_t last_bits, bool rough = false);
+
+/// The same for physics::reciprocalNormalRange against physics::reciprocalNormalRangeSpec (every
+/// float: first_bits 0, last_bits 0xffffffff, negative ones and NaNs included; the bits compare
+/// exactly, NaN's too). `rough`: the approximate reciprocal alone (MUFU.RCP), the control.
+DeviceMathCheck deviceReciprocalNormalRangeMismatches(std::uint32_t first_bits, std::uint32_t last_bits,
+                                                      bool rough = false);
 
 }  // namespace seaspring

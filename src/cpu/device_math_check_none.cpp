@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file device_math_check_none.cpp
-/// \brief deviceSqrtNormalRangeMismatches of a build without the CUDA backend: nothing to check
-///        (the host's sqrtNormalRange is sqrtf itself).
+/// \brief deviceSqrtNormalRangeMismatches and deviceReciprocalNormalRangeMismatches of a build
+///        without the CUDA backend: nothing to check (the host's forms are their definitions).
 #include "core/device_math_check.h"
 
 namespace seaspring {
@@ -10,6 +10,10 @@ DeviceMathCheck deviceSqrtNormalRangeMismatches(std::uint32_t, std::uint32_t, bo
     DeviceMathCheck r;
     r.why = "this build has no CUDA backend (configure with -DSEASPRING_CUDA=ON)";
     return r;
+}
+
+DeviceMathCheck deviceReciprocalNormalRangeMismatches(std::uint32_t, std::uint32_t, bool) {
+    return deviceSqrtNormalRangeMismatches(0, 0, false);
 }
 
 }  // namespace seaspring

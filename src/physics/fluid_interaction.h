@@ -298,7 +298,7 @@ SEASPRING_HD inline void boundPair(std::uint32_t j, float drx, float dry, float 
     const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
     ar = fma32(c.massfluid * dot_vf, va.w * in.press_ovrho[j].y, ar);
     const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
-    visc = maxf(visc, viscDtPair(dot_vr, 1.f / (rr2 + c.eta2)));
+    visc = maxf(visc, viscDtPair(dot_vr, reciprocalNormalRange(rr2 + c.eta2)));
 }
 
 /// Force evaluation of DBC boundary particle `i`: continuity with fluid neighbours and the

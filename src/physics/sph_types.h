@@ -96,6 +96,46 @@ SEASPRING_HD_INLINE float sqrtNormalRange(float x) {
 #endif
 }
 
+/// Where reciprocalNormalRange is 1/x: |x| in [2^-126, 2^126].
+constexpr float kReciprocalNormalRangeMin = 1.17549435e-38f;  // 2^-126
+constexpr float kReciprocalNormalRangeMax = 8.50705917e37f;   // 2^126
+
+/// reciprocalNormalRange's values, the definition on both backends: 1.f / x (IEEE, correctly
+/// rounded) for |x| in [2^-126, 2^126]; +-0 (x's sign) for finite |x| above 2^126, where 1/x is
+/// subnormal; NaN (bits 0x7fffffff) for 0, subnormals, infinities and NaN. The host evaluates
+/// this; `deviceReciprocalNormalRangeMismatches` (core/device_math_check.h) checks, for every one of
+/// the 2^32 floats, that the GPU's sequence gives these bits.
+SEASPRING_HD_INLINE float reciprocalNormalRangeSpec(float x) {
+    const float ax = fabsf(x);
+    if (ax >= kReciprocalNormalRangeMin && ax <= kReciprocalNormalRangeMax) return 1.f / x;
+    if (ax > kReciprocalNormalRangeMax && ax <= 3.40282347e38f) return x > 0.f ? 0.f : -0.f;
+    return uintBitsToFloat(0x7fffffffu);
+}
+
+/// 1/x for the pair loops, whose arguments ((r^2 + eta^2)(rho_a + rho_b), r^2 + eta^2) lie far
+/// inside [2^-126, 2^126] in any run with finite positive densities: reciprocalNormalRangeSpec's
+/// bits on both backends. On the GPU it is the fast path of CUDA's IEEE reciprocal alone, without
+/// its range check and the branch around it: an approximate reciprocal r (MUFU.RCP, subnormal
+/// results flushed to 0), then r + r (1 - x r) with the residual exact in one fma; outside the
+/// range that sequence gives the spec's NaN and zeros. On the host: the spec.
+SEASPRING_HD_INLINE float reciprocalNormalRange(float x) {
+#if defined(__CUDA_ARCH__)
+    float y;
+    asm("{\n\t"
+        ".reg .f32 r, e;\n\t"
+        "rcp.approx.ftz.f32 r, %1;\n\t"
+        "neg.f32 e, %1;\n\t"
+        "fma.rn.f32 e, e, r, 0f3F800000;\n\t"
+        "fma.rn.f32 %0, r, e, r;\n\t"
+        "}"
+        : "=f"(y)
+        : "f"(x));
+    return y;
+#else
+    return reciprocalNormalRangeSpec(x);
+#endif
+}
+
 SEASPRING_HD inline int maxi(int a, int b) { return a > b ? a : b; }
 SEASPRING_HD inline int mini(int a, int b) { return a < b ? a : b; }
 

@@ -24,12 +24,14 @@ enum class Viscosity { Artificial = 1, LaminarSps = 2, Laminar = 3 };
 /// pairs enters the CFL condition); ov_r2eta = 1/(r^2 + eta2).
 SEASPRING_HD inline float viscDtPair(float dot_vr, float ov_r2eta) { return dot_vr * ov_r2eta; }
 
-/// 1/(r^2 + eta2) and 1/(rho_a + rho_b) of a pair from one division (the pair loop's only
-/// one): D = 1/((r^2 + eta2)(rho_a + rho_b)).
+/// 1/(r^2 + eta2) and 1/(rho_a + rho_b) of a pair from one reciprocal (the pair loop's only
+/// one): D = 1/((r^2 + eta2)(rho_a + rho_b)), through reciprocalNormalRange: the bits of 1.f / x
+/// for any argument of a run with finite positive densities (sph_types.h), without the GPU's
+/// range check.
 SEASPRING_HD inline void pairReciprocals(float rr2, float eta2, float rho_a, float rho_b, float& ov_r2eta,
                                          float& ov_rhosum) {
     const float r2eta = rr2 + eta2, rhosum = rho_a + rho_b;
-    const float d = 1.f / (r2eta * rhosum);
+    const float d = reciprocalNormalRange(r2eta * rhosum);
     ov_r2eta = d * rhosum;
     ov_rhosum = d * r2eta;
 }

@@ -47,3 +47,34 @@ TEST(DeviceMath, SqrtNormalRangeIsSqrtfForEveryFloatInRange) {
     EXPECT_EQ(r.checked, std::uint64_t(last - first) + 1u);
     EXPECT_EQ(r.mismatches, 0u) << "first at bits 0x" << std::hex << r.first_mismatch_bits;
 }
+
+// physics::reciprocalNormalRange is the fast path of the GPU's IEEE reciprocal without its range
+// check: all 2^32 floats (both signs, zeros, subnormals, infinities, NaNs) through it and through
+// its definition reciprocalNormalRangeSpec (1.f / x in [2^-126, 2^126], +-0 above, NaN below and
+// for infinities and NaNs) on the device, bit for bit. The control (MUFU.RCP's approximation
+// alone) must differ somewhere. The pair loops' arguments lie inside the range.
+TEST(DeviceMath, ReciprocalNormalRangeIsItsDefinitionForEveryFloat) {
+    using namespace seaspring::physics;
+    EXPECT_EQ(floatBitsToUint(kReciprocalNormalRangeMin), 0x00800000u);  // 2^-126
+    EXPECT_EQ(floatBitsToUint(kReciprocalNormalRangeMax), 0x7e800000u);  // 2^126
+    const seaspring::DeviceMathCheck control = seaspring::deviceReciprocalNormalRangeMismatches(0u, 0xffffffffu, true);
+    if (!control.ran) GTEST_SKIP() << "no device check: " << control.why;
+    EXPECT_GT(control.mismatches, control.checked / 100) << "the control rcp.approx should differ from 1/x";
+    const seaspring::DeviceMathCheck r = seaspring::deviceReciprocalNormalRangeMismatches(0u, 0xffffffffu);
+    ASSERT_TRUE(r.ran) << r.why;
+    EXPECT_EQ(r.checked, std::uint64_t(1) << 32);
+    EXPECT_EQ(r.mismatches, 0u) << "first at bits 0x" << std::hex << r.first_mismatch_bits;
+}
+
+// The host's reciprocalNormalRange is its definition: 1/x inside the range, the GPU sequence's
+// zeros and NaN outside it (checked against the GPU above).
+TEST(HostMath, ReciprocalNormalRangeOutsideItsRange) {
+    using namespace seaspring::physics;
+    EXPECT_EQ(reciprocalNormalRange(4.f), 0.25f);
+    EXPECT_EQ(reciprocalNormalRange(-kReciprocalNormalRangeMin), -1.f / kReciprocalNormalRangeMin);
+    EXPECT_EQ(reciprocalNormalRange(kReciprocalNormalRangeMax), 1.f / kReciprocalNormalRangeMax);
+    EXPECT_EQ(floatBitsToUint(reciprocalNormalRange(3e38f)), 0u);            // +0
+    EXPECT_EQ(floatBitsToUint(reciprocalNormalRange(-3e38f)), 0x80000000u);  // -0
+    for (float x : {0.f, -0.f, 1e-39f, -1e-40f, INFINITY, -INFINITY, NAN})
+        EXPECT_EQ(floatBitsToUint(reciprocalNormalRange(x)), 0x7fffffffu) << x;
+}
