@@ -143,7 +143,7 @@ EOF
 fi
 
 if want liao; then
-  echo "== DualSPHysics' FlexStruc Liao 2D as shipped (CaseDambreak2D_FSI_Def.xml: dp 2 mm, plate 8 mm = 4 particles," | tee -a "$table"
+  echo "== DualSPHysics' FlexStruc Liao 2D as shipped (CaseDambreak2D_FSI_Def.xml: dp 2 mm, plate drawn 8 mm = 5 particles," | tee -a "$table"
   echo "   nu 0.49, plane strain, TimeMax 1 s): plate top (0.6, 0, 0.09) horizontal displacement (GPU)" | tee -a "$table"
   cp "$root/build-dev/shared-cases/flexstruc/DambreakGateTimeSeries.csv" "$work/"
   for sc in $SC_LIST; do
