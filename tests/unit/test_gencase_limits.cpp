@@ -120,6 +120,9 @@ TEST(GencaseLimits, RejectsWhatTheSolverWouldReject) {
                          "<parameter key=\"VcpmSurfaceCorrection\" value=\"0\"/><parameter key=\"VcpmRowBending\" "
                          "value=\"1\"/><parameter key=\"Visco\""),
                "key=\"VcpmRowBending\" value=\"1\": needs VcpmSurfaceCorrection 1");
+    EXPECT_HAS(errorWith("rows2", "<parameter key=\"Visco\"",
+                         "<parameter key=\"VcpmRowBending\" value=\"2\"/><parameter key=\"Visco\""),
+               "key=\"VcpmRowBending\" value=\"2\": is not supported by seaspring (supported: -1 auto");
     EXPECT_HAS(errorWith("cfl", "<cflnumber value=\"0.2\" />", "<cflnumber value=\"5\" />"),
                "<cflnumber> value=5: must lie in (0, 1]");
     // gravity -1e300 gave infinite constants and exit 0.
