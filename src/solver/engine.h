@@ -248,59 +248,10 @@ public:
     }
     void downloadFields(HostParticles& out) override { downloadIdOrder(out, ~0u, 0u); }
 
-    void saveState(CheckpointData& out) override {
-        noForcesAhead("saveState");
-        exec_.synchronize();
-        forEachStateArray([&](const std::string& name, auto& buf, bool) {
-            std::vector<std::remove_pointer_t<decltype(buf.data())>> host;
-            copyToHost(buf, host);
-            out.putArray("engine/" + name, host);
-        });
-        if (solid_.n > 0) {
-            out.reals["engine/solid_t0"] = solid_.t0;
-            out.reals["engine/solid_span"] = solid_.span;
-        }
-        out.ints["engine/np"] = (long long)(setup_.nbound) + setup_.nfluid;
-        out.ints["engine/nbound"] = nbound_;
-        out.ints["engine/nfluid_active"] = nfluid_;
-        out.ints["engine/nsolid"] = solid_.n;
-        out.ints["engine/ncells"] = setup_.grid.cellCount();
-        out.ints["engine/sorted"] = sorted_ ? 1 : 0;
-        out.ints["engine/divides"] = (long long)counts_.divides;
-        out.ints["engine/sorts"] = (long long)counts_.sorts;
-    }
-
-    void loadState(const CheckpointData& in) override {
-        dropForcesAhead();
-        solid_end_checked_ = false;
-        auto expect = [&](const char* name, long long want) {
-            const long long got = in.integer(std::string("engine/") + name);
-            if (got != want)
-                throw Error(in.source + ": restart file was written for another case or set-up (" + name + " " +
-                            std::to_string(got) + ", this run has " + std::to_string(want) + ")");
-        };
-        expect("np", (long long)(setup_.nbound) + setup_.nfluid);
-        expect("nbound", nbound_);
-        expect("nsolid", solid_.n);
-        expect("ncells", setup_.grid.cellCount());
-        forEachStateArray([&](const std::string& name, auto& buf, bool same_size) {
-            using T = std::remove_pointer_t<decltype(buf.data())>;
-            const std::vector<T> host = in.getArray<T>("engine/" + name);
-            if (same_size && host.size() != buf.size())
-                throw Error(in.source + ": restart array '" + name + "' has " + std::to_string(host.size()) +
-                            " elements, this run has " + std::to_string(buf.size()) +
-                            " (a run with other options wrote it)");
-            assignFrom(buf, host);
-        });
-        if (solid_.n > 0) {
-            solid_.t0 = in.real("engine/solid_t0");
-            solid_.span = in.real("engine/solid_span");
-        }
-        nfluid_ = std::uint32_t(in.integer("engine/nfluid_active"));
-        sorted_ = in.integer("engine/sorted") != 0;
-        counts_.divides = (unsigned long long)in.integer("engine/divides");
-        counts_.sorts = (unsigned long long)in.integer("engine/sorts");
-    }
+    /// Restart files (engine_checkpoint.h): every state array by name (forEachStateArray), the
+    /// counters and the sizes they must match.
+    void saveState(CheckpointData& out) override;
+    void loadState(const CheckpointData& in) override;
 
 private:
     /// Whether a divide may only refresh PosCell (a skin, and sorted once).
@@ -517,3 +468,5 @@ private:
 };
 
 }  // namespace seaspring::solver
+
+#include "solver/engine_checkpoint.h"
