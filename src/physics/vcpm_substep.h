@@ -6,6 +6,7 @@
 ///        (bonds, sums S, bond forces, breakage) is vcpm.h.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "core/host_device.h"
@@ -16,12 +17,30 @@
 
 namespace seaspring::physics {
 
-/// Acceleration of a solid particle: (bond force + hydrodynamic force)/m + g - c_d v.
+/// Acceleration of a solid particle: (bond force + hydrodynamic force)/m + g - c_d v. Without
+/// damping (c_d = 0) the velocity is not read: the term is absent, not 0 v (which would carry a
+/// NaN velocity or flip the sign of a -0), so that the predictor's velocity v^{m+1/2}, which
+/// only this term reads, is not needed (predictorForceUsed).
 SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double3& ffluid, const Double3& vel,
                                               const VcpmMaterial& m, double gx, double gy, double gz) {
-    return Double3{(fbond.x + ffluid.x) * m.inv_mass + gx - m.damp_rate * vel.x,
-                   (fbond.y + ffluid.y) * m.inv_mass + gy - m.damp_rate * vel.y,
-                   (fbond.z + ffluid.z) * m.inv_mass + gz - m.damp_rate * vel.z};
+    const Double3 a{(fbond.x + ffluid.x) * m.inv_mass + gx, (fbond.y + ffluid.y) * m.inv_mass + gy,
+                    (fbond.z + ffluid.z) * m.inv_mass + gz};
+    if (m.damp_rate == 0.0) return a;
+    return Double3{a.x - m.damp_rate * vel.x, a.y - m.damp_rate * vel.y, a.z - m.damp_rate * vel.z};
+}
+
+/// Whether a sub-step's first force evaluation (at r^m, for the predictor's v^{m+1/2}) changes
+/// anything. Of the predictor's results only r^{m+1/2} = r^m + dt/2 v^m enters the corrector's
+/// force evaluation and update; v^{m+1/2} enters only the damping term (solidAcceleration) and
+/// the contact dashpot, and the evaluation at r^m also decides bond breakage. So for bodies
+/// that are undamped and unbreakable, without contact, the evaluation at r^m is skipped
+/// (SolidSubCycle): the same bits at half the passes. Its alarms at r^m are then raised at
+/// r^{m+1/2} or by the end-of-cycle check instead.
+inline bool predictorForceUsed(const VcpmMaterial* m, std::size_t nbodies, bool contact) {
+    if (contact) return true;
+    for (std::size_t b = 0; b < nbodies; ++b)
+        if (m[b].damp_rate != 0.0 || m[b].crit_stretch > 0.0) return true;
+    return false;
 }
 
 /// The force on solid particle s other than the fluid's: its bond force `fi`, plus its point
@@ -117,6 +136,11 @@ SEASPRING_HD inline Double3 solidBondForceAt(std::uint32_t s, const Double3* ep,
     return solidBondForceLanes(s, 0u, 1u, ep, st, b, cn, f);
 }
 
+/// r^{m+1/2} = r^m + dt/2 v^m (Eq. 21), dth = dt/2.
+SEASPRING_HD inline Double3 solidHalfPosition(const Double3& p, const Double3& v, double dth) {
+    return Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
+}
+
 /// Predictor of a sub-step (Eqs. 20-21) for particle s, given its bond force `fi` at r^m
 /// (solidBondForceAt): a^m, then v^{m+1/2} = v^m + dt/2 a^m and r^{m+1/2} = r^m + dt/2 v^m.
 SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& st, double f, double dt, double gx,
@@ -127,7 +151,7 @@ SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& s
     const double dth = 0.5 * dt;
     st.vel0[s] = v;
     st.vel[s] = Double3{v.x + dth * a.x, v.y + dth * a.y, v.z + dth * a.z};
-    st.pos_half[s] = Double3{p.x + dth * v.x, p.y + dth * v.y, p.z + dth * v.z};
+    st.pos_half[s] = solidHalfPosition(p, v, dth);
 }
 
 /// A particle outside st.keep at the predictor stays where it is, at rest (true: s is frozen,
@@ -139,6 +163,23 @@ SEASPRING_HD inline bool solidFrozenAtPredictor(std::uint32_t s, const SolidStat
     st.vel[s] = rest;
     st.pos_half[s] = st.pos[s];
     return true;
+}
+
+/// The predictor without its force (when !predictorForceUsed), into `half` (r^{m+1/2}): v^m
+/// kept (in vel0 and vel) and r^{m+1/2}, or frozen as solidFrozenAtPredictor. The same r^{m+1/2}
+/// and v^m as solidPredictorWith; vel holds v^m instead of v^{m+1/2}, which nothing then reads.
+SEASPRING_HD inline void solidHalfStepAt(std::uint32_t s, const SolidState& st, double dt, Double3* half) {
+    const Double3 p = st.pos[s];
+    if (solidOutside(st.keep, p)) {
+        const Double3 rest{0, 0, 0};
+        st.vel0[s] = rest;
+        st.vel[s] = rest;
+        half[s] = p;
+        return;
+    }
+    const Double3 v = st.vel[s];
+    st.vel0[s] = v;
+    half[s] = solidHalfPosition(p, v, 0.5 * dt);
 }
 
 /// Corrector (Eqs. 22-23) for particle s, given its bond force `fi` at r^{m+1/2}:
@@ -168,6 +209,17 @@ SEASPRING_HD inline void solidCorrectorWith(std::uint32_t s, const SolidState& s
     st.pos[s] = p;
 }
 
+/// Corrector without the next predictor's force (when !predictorForceUsed): solidCorrectorWith,
+/// then the next sub-step's half step from the new state into `half_next` (solidHalfStepAt; the
+/// values the next sub-step's first pass would compute, one pass earlier). `half_next` is not
+/// st.pos_half, which the other particles of this pass read.
+SEASPRING_HD inline void solidCorrectorThenHalfStep(std::uint32_t s, const SolidState& st, double f, double dt,
+                                                    double gx, double gy, double gz, const Double3& fi,
+                                                    Double3* half_next) {
+    solidCorrectorWith(s, st, f, dt, gx, gy, gz, fi);
+    solidHalfStepAt(s, st, dt, half_next);
+}
+
 /// Predictor pass of a sub-step for particle s over `lanes` lanes (lanes = 1: one thread).
 SEASPRING_HD inline void solidPredictorLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                              const SolidState& st, const SolidBonds& b, const ClampNodes& cn,
@@ -181,13 +233,22 @@ SEASPRING_HD inline void solidPredictorLanes(std::uint32_t s, std::uint32_t lane
 }
 
 /// Corrector pass for particle s over `lanes` lanes (lanes = 1: one thread); a particle frozen
-/// at the predictor (outside st.keep) stays.
+/// at the predictor (outside st.keep) stays. `half_next` (not null): then the next sub-step's
+/// half step into it (solidCorrectorThenHalfStep; a frozen particle stays frozen there).
 SEASPRING_HD inline void solidCorrectorLanes(std::uint32_t s, std::uint32_t lane, std::uint32_t lanes,
                                              const SolidState& st, const SolidBonds& b, const ClampNodes& cn,
-                                             double f, double dt, double gx, double gy, double gz) {
-    if (solidOutside(st.keep, st.pos[s])) return;
+                                             double f, double dt, double gx, double gy, double gz,
+                                             Double3* half_next = nullptr) {
+    if (solidOutside(st.keep, st.pos[s])) {
+        if (half_next && lane == 0) half_next[s] = st.pos_half[s];  // r^m: frozen at the predictor
+        return;
+    }
     const Double3 fi = solidBondForceLanes(s, lane, lanes, st.pos_half, st, b, cn, f);
-    if (lane == 0) solidCorrectorWith(s, st, f, dt, gx, gy, gz, fi);
+    if (lane != 0) return;
+    if (half_next)
+        solidCorrectorThenHalfStep(s, st, f, dt, gx, gy, gz, fi, half_next);
+    else
+        solidCorrectorWith(s, st, f, dt, gx, gy, gz, fi);
 }
 
 /// The predictor and corrector passes for one thread per particle.

@@ -47,7 +47,8 @@ struct BondLanes {
     SEASPRING_HD static constexpr std::uint32_t lane(std::uint32_t k) { return k & (lanes() - 1u); }
 };
 
-/// The predictor (kCorrector false) or the corrector pass of a sub-step.
+/// The predictor (kCorrector false) or the corrector pass of a sub-step; `half_next` (corrector
+/// only, when the predictor's force is unused): then the next sub-step's half step into it.
 template <std::uint32_t kShift, bool kCorrector>
 struct SolidStepPass {
     physics::SolidState st;
@@ -55,9 +56,11 @@ struct SolidStepPass {
     physics::ClampNodes cn;
     double f, dt, gx, gy, gz;
     BondLanes<kShift> bl;
+    physics::Double3* half_next = nullptr;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         if constexpr (kCorrector)
-            physics::solidCorrectorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
+            physics::solidCorrectorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz,
+                                         half_next);
         else
             physics::solidPredictorLanes(bl.particle(k), bl.lane(k), bl.lanes(), st, b, cn, f, dt, gx, gy, gz);
     }
@@ -153,20 +156,25 @@ struct SolidSumsPass {
     }
 };
 
-/// The start of a sub-cycle: the clamp nodes' motion over it (indices [0, cn.n)) and, with
-/// contact, the solid particles' candidate lists ([cn.n, cn.n + b.n); they read the solid
-/// particles and the boundary block, not the clamp nodes' motion).
+/// The start of a sub-cycle: the clamp nodes' motion over it (indices [0, cn.n)) and, for the
+/// solid particles ([cn.n, cn.n + b.n); they read the solid particles and the boundary block,
+/// not the clamp nodes' motion), with contact their candidate lists, or, when the predictor's
+/// force is unused (`half_step`; never with contact), the first sub-step's half step.
 struct SubCycleStartPass {
     ClampMotion cm;
     std::uint32_t nclamp;
     physics::SolidState st;
     physics::SolidBonds b;
     SubCycleContact ct;
+    bool half_step;
+    double dt;
     SEASPRING_HD void operator()(std::uint32_t i) const {
         if (i < nclamp)
             physics::clampMotionAt(i, cm.pos_initial, cm.object, cm.motions, cm.pos_start, cm.pos_end);
-        else
+        else if (ct.on)
             physics::contactCandidatesAt(i - nclamp, st, b, ct.w, ct.g, ct.cp, ct.cl);
+        else if (half_step)
+            physics::solidHalfStepAt(i - nclamp, st, dt, st.pos_half);
     }
 };
 
@@ -232,7 +240,12 @@ struct CountCombine {
 /// computed with IEEE division and product, so every runner has the same bits); with contact,
 /// the contact force in the sums pass of each evaluation; last, the solid's end state into the
 /// boundary block (SolidToBoundaryPass, with the ledger's impulse and work over the cycle) and,
-/// with check_end, the per-step blow-up test's checks (SolidEndPass).
+/// with check_end, the per-step blow-up test's checks (SolidEndPass). Without
+/// `predictor_force` (physics::predictorForceUsed false: undamped, unbreakable, no contact) a
+/// sub-step is two passes, the sums at r^{m+1/2} and the corrector, which also takes the next
+/// sub-step's half step (the first one's is in the start pass): the same bits as four. The
+/// corrector reads its neighbours' r^{m+1/2} while it writes r^{m+3/2}, so the half positions
+/// alternate between st.pos_half (even m) and `pos_half_alt` (odd m).
 template <std::uint32_t kShift>
 struct SolidSubCycle {
     physics::SolidState st;
@@ -245,21 +258,32 @@ struct SolidSubCycle {
     BondLanes<kShift> bl;  ///< shift 0: one thread per particle
     SolidToBoundaryPass to_boundary;  ///< the last pass: the end state into the boundary block
     bool check_end;  ///< the last pass also runs the per-step test's checks (SolidEndPass)
+    bool predictor_force = true;  ///< false: the evaluation at r^m skipped (physics::predictorForceUsed)
+    physics::Double3* pos_half_alt = nullptr;  ///< the odd sub-steps' r^{m+1/2} without predictor_force
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
 #endif
     template <class Run>
     SEASPRING_HD void operator()(Run& run) const {
-        run(cn.n + (ct.on ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct});
+        const bool half_step = !predictor_force && !ct.on && pos_half_alt != nullptr;
+        run(cn.n + (ct.on || half_step ? b.n : 0u), SubCycleStartPass{cm, cn.n, st, b, ct, half_step, dt});
         const double inv_n = 1.0 / double(n);
         const std::uint32_t nl = b.n << bl.shift;
         for (int m = 0; m < n; ++m) {
             const double f0 = double(m) * inv_n, fh = (double(m) + 0.5) * inv_n;
-            run(nl + cn.n, SolidSumsPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
-            run(nl, SolidStepPass<kShift, false>{st, b, cn, f0, dt, gx, gy, gz, bl});
-            run(nl + cn.n, SolidSumsPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
-            run(nl, SolidStepPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
+            if (!half_step) {
+                run(nl + cn.n, SolidSumsPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
+                run(nl, SolidStepPass<kShift, false>{st, b, cn, f0, dt, gx, gy, gz, bl});
+                run(nl + cn.n, SolidSumsPass<kShift>{st.pos_half, st, b, cn, fh, ct, bl});
+                run(nl, SolidStepPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
+                continue;
+            }
+            physics::SolidState sm = st;
+            sm.pos_half = (m & 1) ? pos_half_alt : st.pos_half;
+            physics::Double3* next = (m & 1) ? st.pos_half : pos_half_alt;
+            run(nl + cn.n, SolidSumsPass<kShift>{sm.pos_half, sm, b, cn, fh, ct, bl});
+            run(nl, SolidStepPass<kShift, true>{sm, b, cn, fh, dt, gx, gy, gz, bl, next});
         }
         run(b.n, SolidEndPass{to_boundary, check_end, st, b, cn, ct});  // in the sub-steps' launch in one block
     }
