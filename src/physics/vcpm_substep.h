@@ -29,17 +29,25 @@ SEASPRING_HD inline Double3 solidAcceleration(const Double3& fbond, const Double
     return Double3{a.x - m.damp_rate * vel.x, a.y - m.damp_rate * vel.y, a.z - m.damp_rate * vel.z};
 }
 
-/// Whether a sub-step's first force evaluation (at r^m, for the predictor's v^{m+1/2}) changes
+/// Whether a sub-step's force at r^m (the predictor's acceleration, for v^{m+1/2}) changes
 /// anything. Of the predictor's results only r^{m+1/2} = r^m + dt/2 v^m enters the corrector's
 /// force evaluation and update; v^{m+1/2} enters only the damping term (solidAcceleration) and
-/// the contact dashpot, and the evaluation at r^m also decides bond breakage. So for bodies
-/// that are undamped and unbreakable, without contact, the evaluation at r^m is skipped
-/// (SolidSubCycle): the same bits at half the passes. Its alarms at r^m are then raised at
-/// r^{m+1/2} or by the end-of-cycle check instead.
+/// the contact dashpot (whose force at r^m also comes from the sums pass). So for undamped
+/// bodies without contact the predictor's force pass is skipped (SolidSubCycle), and so is the
+/// sums pass at r^m unless it decides breakage (startSumsUsed): the same bits in two or three
+/// passes of four. Alarms at r^m are then raised at r^{m+1/2} or by the end-of-cycle check.
 inline bool predictorForceUsed(const VcpmMaterial* m, std::size_t nbodies, bool contact) {
     if (contact) return true;
     for (std::size_t b = 0; b < nbodies; ++b)
-        if (m[b].damp_rate != 0.0 || m[b].crit_stretch > 0.0) return true;
+        if (m[b].damp_rate != 0.0) return true;
+    return false;
+}
+
+/// Whether the sums pass at r^m is needed without the predictor's force (predictorForceUsed
+/// false): it decides the breakage of bonds strained past their critical stretch at r^m.
+inline bool startSumsUsed(const VcpmMaterial* m, std::size_t nbodies) {
+    for (std::size_t b = 0; b < nbodies; ++b)
+        if (m[b].crit_stretch > 0.0) return true;
     return false;
 }
 

@@ -48,9 +48,10 @@ struct SolidArrays {
     Buf<physics::Double3> clamp_pos_initial, clamp_start, clamp_end;
     Buf<std::int16_t> clamp_object;
     bool clamps_move = false;  ///< a clamp node belongs to a moving boundary (else no motion upload)
-    /// physics::predictorForceUsed; false: two passes per sub-step, whose odd sub-steps keep
-    /// their half positions in pos_half_alt (empty otherwise; SolidSubCycle)
-    bool predictor_force = true;
+    /// physics::predictorForceUsed; false: two passes per sub-step (three with start_sums,
+    /// physics::startSumsUsed), whose odd sub-steps keep their half positions in pos_half_alt
+    /// (empty otherwise; SolidSubCycle)
+    bool predictor_force = true, start_sums = true;
     Buf<physics::Double3> pos_half_alt;
     Buf<double> clamp_sum;
     double t0 = 0, span = 0;  ///< the current sub-cycle's start time and length
@@ -89,6 +90,7 @@ struct SolidArrays {
         assignFrom(alarm, std::vector<physics::SolidAlarm>(n));
         contact_on = s.contact_on;
         predictor_force = physics::predictorForceUsed(s.materials.data(), s.materials.size(), s.contact_on);
+        start_sums = physics::startSumsUsed(s.materials.data(), s.materials.size());
         if (!predictor_force) assignFrom(pos_half_alt, s.pos);
         if (contact_on) {
             contact = s.contact;

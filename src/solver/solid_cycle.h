@@ -80,7 +80,8 @@ void runSolidSubCycle(const Exec& exec, SolidArrays<Buf>& s, MotionBuf& motion_b
         const SolidSubCycle<decltype(bl)::shift> body{s.state(), s.bonds(), s.clamps(), cm, n, dt, w.gx, w.gy, w.gz, ct,
                                                       bl, solidToBoundaryPass(s, w, dt * n, ledger), ledger,
                                                       s.predictor_force,
-                                                      s.predictor_force ? nullptr : s.pos_half_alt.data()};
+                                                      s.predictor_force ? nullptr : s.pos_half_alt.data(),
+                                                      s.start_sums};
         exec.sequence(std::uint64_t(s.n) + s.nclamp, (s.n << bl.shift) + s.nclamp, body);  // widest: the sums
     };
     switch (exec.bondLaneShift(std::uint64_t(s.n) + s.nclamp, s.n)) {  // 0 on the host

@@ -241,9 +241,10 @@ struct CountCombine {
 /// the contact force in the sums pass of each evaluation; last, the solid's end state into the
 /// boundary block (SolidToBoundaryPass, with the ledger's impulse and work over the cycle) and,
 /// with check_end, the per-step blow-up test's checks (SolidEndPass). Without
-/// `predictor_force` (physics::predictorForceUsed false: undamped, unbreakable, no contact) a
-/// sub-step is two passes, the sums at r^{m+1/2} and the corrector, which also takes the next
-/// sub-step's half step (the first one's is in the start pass): the same bits as four. The
+/// `predictor_force` (physics::predictorForceUsed false: undamped, no contact) a sub-step is
+/// the sums at r^m only where they decide breakage (`start_sums`, physics::startSumsUsed), the
+/// sums at r^{m+1/2} and the corrector, which also takes the next sub-step's half step (the
+/// first one's is in the start pass): the same bits as the four passes. The
 /// corrector reads its neighbours' r^{m+1/2} while it writes r^{m+3/2}, so the half positions
 /// alternate between st.pos_half (even m) and `pos_half_alt` (odd m).
 template <std::uint32_t kShift>
@@ -260,6 +261,7 @@ struct SolidSubCycle {
     bool check_end;  ///< the last pass also runs the per-step test's checks (SolidEndPass)
     bool predictor_force = true;  ///< false: the evaluation at r^m skipped (physics::predictorForceUsed)
     physics::Double3* pos_half_alt = nullptr;  ///< the odd sub-steps' r^{m+1/2} without predictor_force
+    bool start_sums = true;  ///< without predictor_force: the sums pass at r^m still runs (breakage)
 
 #if defined(__CUDACC__)
 #pragma nv_exec_check_disable
@@ -279,6 +281,7 @@ struct SolidSubCycle {
                 run(nl, SolidStepPass<kShift, true>{st, b, cn, fh, dt, gx, gy, gz, bl});
                 continue;
             }
+            if (start_sums) run(nl + cn.n, SolidSumsPass<kShift>{st.pos, st, b, cn, f0, ct, bl});
             physics::SolidState sm = st;
             sm.pos_half = (m & 1) ? pos_half_alt : st.pos_half;
             physics::Double3* next = (m & 1) ? st.pos_half : pos_half_alt;

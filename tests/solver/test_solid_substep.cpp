@@ -1,12 +1,14 @@
 // SeaSpring — MIT licence.
 /// \file test_solid_substep.cpp
 /// \brief The solids' sub-cycle without the predictor's force evaluation (solver::SolidSubCycle
-///        with predictor_force false, physics::predictorForceUsed): the same bits as the four
-///        passes of the seed paper's sub-step wherever the evaluation at r^m changes nothing
-///        (undamped, unbreakable, no contact), here on a moving, loaded 2D cantilever with the
-///        rows' bending, particles leaving the keep box and cycles of odd and even lengths.
-///        Controls: with damping (where the predictor's velocity counts) and with one half-position
-///        array for both parities (the race the second array avoids), the results differ.
+///        with predictor_force false, physics::predictorForceUsed; the sums pass at r^m kept
+///        for breakage, physics::startSumsUsed): the same bits as the four passes of the seed
+///        paper's sub-step wherever the force at r^m changes nothing (undamped, no contact),
+///        here on a moving, loaded 2D cantilever with the rows' bending, particles leaving the
+///        keep box, bonds breaking and cycles of odd and even lengths. Controls: with damping
+///        (where the predictor's velocity counts), with one half-position array for both
+///        parities (the race the second array avoids) and, for a breakable body, without the
+///        sums pass at r^m, the results differ.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,14 +54,31 @@ struct Outcome {
 
 enum class HalfArrays { Two, One };
 
+/// A critical stretch that the moving cantilever's bonds pass (some of them, during the run;
+/// there the bonds' strain grows through r^m and r^{m+1/2} alike, so breakage alone does not
+/// need the sums at r^m: kick() makes one that does).
+constexpr double kCrit = 2e-5;
+
+/// How a run differs from the default: damping, a critical stretch, and which scheme.
+struct Variant {
+    bool predictor_force = true;
+    bool start_sums = true;
+    double damp_rate = 0.0;
+    double crit_stretch = 0.0;
+    HalfArrays halves = HalfArrays::Two;
+};
+
 /// `cycles` sub-cycles of n_k sub-steps (lengths cycling through 3, 2, 1) from a bent, moving
 /// start under a steady hydrodynamic load; the keep box cuts the free end, so its particles
 /// freeze on the way and their bonds break.
-Outcome run(bool predictor_force, double damp_rate, HalfArrays halves) {
+Outcome run(const Variant& v) {
     const solver::SolidSetup setup = cantileverSetup();
     solver::SolidArrays<solver::HostBuffer> a;
     a.init(setup);
-    for (physics::VcpmMaterial& m : a.materials) m.damp_rate = damp_rate;
+    for (physics::VcpmMaterial& m : a.materials) {
+        m.damp_rate = v.damp_rate;
+        m.crit_stretch = v.crit_stretch;
+    }
     a.pos_half_alt = a.pos;  // allocated whatever the set-up decided
     double xmin = 1e300, xmax = -1e300, zmax = -1e300;
     for (const Double3& p : a.pos) {
@@ -91,14 +110,52 @@ Outcome run(bool predictor_force, double damp_rate, HalfArrays halves) {
         a.span = dt * n;
         const solver::SolidToBoundaryPass tb{slot.data(), a.pos.data(), a.vel.data(), a.fluid_force.data(), dt * n,
                                              a.impulse.data(), a.work.data(), false, bpos.data(), bvelrho.data()};
-        Double3* alt = halves == HalfArrays::Two ? a.pos_half_alt.data() : a.pos_half.data();
+        Double3* alt = v.halves == HalfArrays::Two ? a.pos_half_alt.data() : a.pos_half.data();
         const solver::SolidSubCycle<0> body{a.state(), a.bonds(), a.clamps(), cm, n, dt, 0.0, 0.0, -9.81,
                                             solver::SubCycleContact{}, solver::BondLanes<0>{}, tb, false,
-                                            predictor_force, alt};
+                                            v.predictor_force, alt, v.start_sums};
         SerialRun runner;
         body(runner);
         t += dt * n;
     }
+    return Outcome{a.pos, a.vel, a.broken, a.alarm};
+}
+
+/// One bond of an interior particle at rest stretched just past the critical stretch at r^0 while
+/// the particle moves back fast enough that the bond is compressed at r^{1/2}: one sub-step.
+/// The four passes break it at r^0; a scheme without the sums pass at r^m would not.
+Outcome kick(const Variant& v) {
+    const solver::SolidSetup setup = cantileverSetup();
+    solver::SolidArrays<solver::HostBuffer> a;
+    a.init(setup);
+    const double crit = 1e-3;
+    for (physics::VcpmMaterial& m : a.materials) m.crit_stretch = crit;
+    a.pos_half_alt = a.pos;
+    const std::uint32_t s = a.n / 2, j = a.partner[s];  // slot 0 of s
+    EXPECT_EQ(a.flags[s] & physics::kBondClamp, 0);
+    const double dx = a.pos[j].x - a.pos[s].x, dz = a.pos[j].z - a.pos[s].z, len = std::sqrt(dx * dx + dz * dz);
+    const double ux = dx / len, uz = dz / len, dt = setup.dt;
+    const double e = 1.01 * crit * len, w = 4.0 * crit * len / dt;  // dt/2 w = 2 crit len
+    a.pos[s] = Double3{a.pos[s].x - e * ux, a.pos[s].y, a.pos[s].z - e * uz};
+    a.vel[s] = Double3{w * ux, 0.0, w * uz};
+    std::vector<std::uint32_t> slot(a.n);
+    for (std::uint32_t i = 0; i < a.n; ++i) slot[i] = i;
+    std::vector<Double3> bpos(a.n);
+    std::vector<physics::Float4> bvelrho(a.n);
+    solver::ClampMotion cm;
+    cm.pos_initial = a.clamp_pos_initial.data();
+    cm.object = a.clamp_object.data();
+    cm.pos_start = a.clamp_start.data();
+    cm.pos_end = a.clamp_end.data();
+    a.t0 = 0;
+    a.span = dt;
+    const solver::SolidToBoundaryPass tb{slot.data(), a.pos.data(), a.vel.data(), a.fluid_force.data(), dt,
+                                         a.impulse.data(), a.work.data(), false, bpos.data(), bvelrho.data()};
+    const solver::SolidSubCycle<0> body{a.state(), a.bonds(), a.clamps(), cm, 1, dt, 0.0, 0.0, 0.0,
+                                        solver::SubCycleContact{}, solver::BondLanes<0>{}, tb, false,
+                                        v.predictor_force, a.pos_half_alt.data(), v.start_sums};
+    SerialRun runner;
+    body(runner);
     return Outcome{a.pos, a.vel, a.broken, a.alarm};
 }
 
@@ -117,25 +174,28 @@ std::size_t count(const std::vector<std::uint8_t>& v) {
 
 }  // namespace
 
-// The cantilever's set-up (undamped, unbreakable, no contact) takes the two-pass sub-step.
-TEST(SolidSubStep, UndampedUnbreakableBodiesSkipThePredictorForce) {
+// The cantilever's set-up (undamped, unbreakable, no contact) takes the two-pass sub-step;
+// damping or contact keep the four passes, a critical stretch the sums pass at r^m.
+TEST(SolidSubStep, UndampedBodiesWithoutContactSkipThePredictorForce) {
     const solver::SolidSetup s = cantileverSetup();
     EXPECT_FALSE(physics::predictorForceUsed(s.materials.data(), s.materials.size(), false));
+    EXPECT_FALSE(physics::startSumsUsed(s.materials.data(), s.materials.size()));
     EXPECT_TRUE(physics::predictorForceUsed(s.materials.data(), s.materials.size(), true));  // contact
     std::vector<physics::VcpmMaterial> m = s.materials;
     m[0].damp_rate = 1.0;
     EXPECT_TRUE(physics::predictorForceUsed(m.data(), m.size(), false));
     m[0].damp_rate = 0.0;
     m[0].crit_stretch = 0.01;
-    EXPECT_TRUE(physics::predictorForceUsed(m.data(), m.size(), false));
+    EXPECT_FALSE(physics::predictorForceUsed(m.data(), m.size(), false));
+    EXPECT_TRUE(physics::startSumsUsed(m.data(), m.size()));
 }
 
-// Two passes per sub-step give the four passes' bits: positions, velocities, the bonds the keep
-// box broke and the alarms. The run must move, freeze particles and break bonds, or the
-// comparison would be empty.
-TEST(SolidSubStep, TwoPassesGiveTheFourPassesBits) {
-    const Outcome full = run(true, 0.0, HalfArrays::Two);
-    const Outcome lean = run(false, 0.0, HalfArrays::Two);
+// Two passes per sub-step (an unbreakable body) and three (a breakable one) give the four
+// passes' bits: positions, velocities, the bonds broken (by the keep box; by strain) and the
+// alarms. The runs must move, freeze particles and break bonds, or the comparison would be empty.
+TEST(SolidSubStep, FewerPassesGiveTheFourPassesBits) {
+    const Outcome full = run(Variant{});
+    const Outcome lean = run(Variant{false, false});
     EXPECT_TRUE(sameBits(full, lean));
     const solver::SolidSetup s = cantileverSetup();
     double moved = 0;
@@ -146,13 +206,22 @@ TEST(SolidSubStep, TwoPassesGiveTheFourPassesBits) {
     }
     EXPECT_GT(moved, 1e-4);
     EXPECT_GT(frozen, 0u);
-    EXPECT_GT(count(full.broken), 0u);
+    const std::size_t by_keep = count(full.broken);
+    EXPECT_GT(by_keep, 0u);
+    const Outcome full_b = run(Variant{true, true, 0.0, kCrit});
+    EXPECT_TRUE(sameBits(full_b, run(Variant{false, true, 0.0, kCrit})));
+    EXPECT_GT(count(full_b.broken), by_keep);  // bonds broke by strain too
+    const Outcome full_k = kick(Variant{});
+    EXPECT_TRUE(sameBits(full_k, kick(Variant{false, true})));
+    EXPECT_EQ(count(full_k.broken), 2u);  // the kicked bond, at both ends
 }
 
-// Controls: where the predictor's velocity counts (damping) the skipped evaluation changes the
-// result, and so does one half-position array for both parities (a corrector would read the
-// half positions its neighbours' correctors are overwriting).
-TEST(SolidSubStep, TheComparisonSeesTheDampingTermAndTheSharedArray) {
-    EXPECT_FALSE(sameBits(run(true, 50.0, HalfArrays::Two), run(false, 50.0, HalfArrays::Two)));
-    EXPECT_FALSE(sameBits(run(true, 0.0, HalfArrays::Two), run(false, 0.0, HalfArrays::One)));
+// Controls: where the predictor's velocity counts (damping) the skipped force changes the
+// result, and so do one half-position array for both parities (a corrector would read the
+// half positions its neighbours' correctors are overwriting) and, for a breakable body, leaving
+// out the sums pass at r^m (where bonds break first).
+TEST(SolidSubStep, TheComparisonSeesDampingTheSharedArrayAndEarlyBreakage) {
+    EXPECT_FALSE(sameBits(run(Variant{true, true, 50.0}), run(Variant{false, false, 50.0})));
+    EXPECT_FALSE(sameBits(run(Variant{}), run(Variant{false, false, 0.0, 0.0, HalfArrays::One})));
+    EXPECT_FALSE(sameBits(kick(Variant{}), kick(Variant{false, false})));
 }
