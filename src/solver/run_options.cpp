@@ -382,8 +382,9 @@ Run control:
   -cellmode:auto|full|h|third|quarter
                        neighbour cells of size 2h (full), h (h), 2h/3 (third) or h/2
                        (quarter); finer cells mean fewer candidates per neighbour and
-                       more rows of cells to visit. auto (default): quarter in 3D and
-                       h in 2D, or the next coarser mode if the grid would exceed 16
+                       more rows of cells to visit. auto (default): in 3D quarter,
+                       or third where h < 2 dp (h/2 narrower than a spacing); h in
+                       2D; or the next coarser mode if the grid would exceed 16
                        cells per particle + 2^20 or a 32-bit packed cell
   -skin:F              skin of the neighbour cells, a fraction 0 <= F <= 0.5 of the cell
                        size (default 0.05): particles keep their cell while they stay

@@ -58,7 +58,10 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
 int resolveCellDiv(const SolverCase& c, int cell_div) {
     if (cell_div > 0) return cell_div;
     const double np = double(c.particles.size());
-    for (int d = c.constants.dimensions == 3 ? 4 : 2; d > 1; --d) {
+    int finest = 2;
+    if (c.constants.dimensions == 3)  // h/2 where it is at least dp wide, else 2h/3
+        finest = c.constants.h >= 2.0 * c.constants.dp * (1.0 - 1e-9) ? 4 : 3;
+    for (int d = finest; d > 1; --d) {
         physics::CellGrid g;
         if (physics::makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
                                   c.domain_max.z, c.constants.h, d, g) &&

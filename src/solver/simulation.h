@@ -77,10 +77,13 @@ constexpr std::uint32_t kAutoPairLanesMax = 4;
 std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
 /// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
 double resolveSkin(const RunOptions& o);
-/// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) 4 in 3D
-/// (cells of h/2: on an H100, SPHERIC Test 2 at 4.4 M particles runs 13% faster than with cells
-/// of h) and 2 in 2D, each the finest whose grid fits 32-bit packed cells and at most
-/// 16 cells per particle + 2^20 (else the next coarser; 1 at the coarsest).
+/// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) in 3D 4
+/// where h >= 2 dp (cells of h/2 at least dp wide), else 3 (on an H100,
+/// SPHERIC Test 2 at 4.4 M particles, h = 2 dp, runs 13% faster than with cells of h; 2h/3 where
+/// h < 2 dp: the 3D sluice gate (h = 1.5 dp) 10% and FlexStruc Liao 3D (h = 1.73 dp) 3% faster
+/// than with cells of h/2, whose cells would hold fewer than one particle), and 2 in 2D, each the
+/// finest whose grid fits 32-bit packed cells and at most 16 cells per particle + 2^20 (else the
+/// next coarser; 1 at the coarsest).
 int resolveCellDiv(const SolverCase& c, int cell_div);
 
 class Simulation {

@@ -131,11 +131,11 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes3D) {
     for (std::size_t i = 0; i < r1.state.pos.size(); ++i)
         maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
     EXPECT_LT(maxdiff, 1e-5);
-    EXPECT_NE(r1.summary.options.find("cells of h/2"), std::string::npos) << r1.summary.options;
+    EXPECT_NE(r1.summary.options.find("cells of 2h/3"), std::string::npos) << r1.summary.options;  // h < 2 dp
 }
 
-// -cellmode:auto: cells of h/2 in 3D and h in 2D, coarser when the grid would be too large
-// for the particles; explicit modes pass through.
+// -cellmode:auto: in 3D cells of h/2, or 2h/3 where h/2 would be narrower than dp, and h in 2D,
+// coarser when the grid would be too large for the particles; explicit modes pass through.
 TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
     const std::string dir = scratch("autocells");
     const auto r3d = test::runCpu(test::generateCaseFile(dir, "db", std::string(SEASPRING_SOURCE_DIR) +
@@ -143,13 +143,23 @@ TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
                                   dir + "/o3", 1, [](solver::RunOptions& o) { o.nsteps = 1; });
     const auto r2d = test::runCpu(test::generateCase(dir, "tank", tank2d(kVariants[0].params)), dir + "/o2", 1,
                                   [](solver::RunOptions& o) { o.nsteps = 1; });
-    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 0), 4);
+    EXPECT_NEAR(r3d.kase.constants.h / r3d.kase.constants.dp, std::sqrt(3.0), 1e-9);  // coefh 1
+    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 0), 3);  // h/2 = 0.87 dp: 2h/3 = 1.15 dp
     EXPECT_EQ(solver::resolveCellDiv(r2d.kase, 0), 2);
     EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 2), 2);
+    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 4), 4);
     EXPECT_EQ(solver::resolveCellDiv(r2d.kase, 3), 3);
-    // The same particles in a domain 60 times longer: h/2 cells exceed 16 per particle + 2^20.
-    solver::SolverCase wide = r3d.kase;
-    wide.domain_max.x = wide.domain_min.x + 60.0 * (wide.domain_max.x - wide.domain_min.x);
+    solver::SolverCase fat = r3d.kase;  // h = 2 dp (SPHERIC Test 2's): h/2 = dp
+    fat.constants.h = 2.0 * fat.constants.dp;
+    EXPECT_EQ(solver::resolveCellDiv(fat, 0), 4);
+    fat.constants.h = 1.99 * fat.constants.dp;
+    EXPECT_EQ(solver::resolveCellDiv(fat, 0), 3);
+    fat.constants.h = 1.4 * fat.constants.dp;  // 2h/3 < dp too: still 2h/3
+    EXPECT_EQ(solver::resolveCellDiv(fat, 0), 3);
+    fat.constants.h = 2.0 * fat.constants.dp;
+    // The same particles in a domain 150 times longer: h/2 cells exceed 16 per particle + 2^20.
+    solver::SolverCase wide = fat;
+    wide.domain_max.x = wide.domain_min.x + 150.0 * (wide.domain_max.x - wide.domain_min.x);
     const int d = solver::resolveCellDiv(wide, 0);
     EXPECT_LT(d, 4);
     physics::CellGrid g;
