@@ -68,18 +68,57 @@ struct Variant {
     HalfArrays halves = HalfArrays::Two;
 };
 
-/// `cycles` sub-cycles of n_k sub-steps (lengths cycling through 3, 2, 1) from a bent, moving
-/// start under a steady hydrodynamic load; the keep box cuts the free end, so its particles
-/// freeze on the way and their bonds break.
-Outcome run(const Variant& v) {
-    const solver::SolidSetup setup = cantileverSetup();
+/// The cantilever's solid arrays with the variant's material, and one sub-cycle run over them
+/// with the variant's scheme (the end state goes into a boundary block of the rig's own).
+struct Rig {
+    solver::SolidSetup setup = cantileverSetup();
     solver::SolidArrays<solver::HostBuffer> a;
-    a.init(setup);
-    for (physics::VcpmMaterial& m : a.materials) {
-        m.damp_rate = v.damp_rate;
-        m.crit_stretch = v.crit_stretch;
+    std::vector<std::uint32_t> slot;
+    std::vector<Double3> bpos;
+    std::vector<physics::Float4> bvelrho;
+
+    explicit Rig(const Variant& v) {
+        a.init(setup);
+        for (physics::VcpmMaterial& m : a.materials) {
+            m.damp_rate = v.damp_rate;
+            m.crit_stretch = v.crit_stretch;
+        }
+        a.pos_half_alt = a.pos;  // allocated whatever the set-up decided
+        slot.resize(a.n);
+        for (std::uint32_t s = 0; s < a.n; ++s) slot[s] = s;
+        bpos.resize(a.n);
+        bvelrho.resize(a.n);
     }
-    a.pos_half_alt = a.pos;  // allocated whatever the set-up decided
+
+    /// n sub-steps of the set-up's dt from t0, gravity gz.
+    void cycle(const Variant& v, double t0, int n, double gz) {
+        const double dt = setup.dt;
+        a.t0 = t0;
+        a.span = dt * n;
+        solver::ClampMotion cm;
+        cm.pos_initial = a.clamp_pos_initial.data();
+        cm.object = a.clamp_object.data();
+        cm.pos_start = a.clamp_start.data();
+        cm.pos_end = a.clamp_end.data();
+        const solver::SolidToBoundaryPass tb{slot.data(), a.pos.data(), a.vel.data(), a.fluid_force.data(), dt * n,
+                                             a.impulse.data(), a.work.data(), false, bpos.data(), bvelrho.data()};
+        Double3* alt = v.halves == HalfArrays::Two ? a.pos_half_alt.data() : a.pos_half.data();
+        const solver::SolidSubCycle<0> body{a.state(), a.bonds(), a.clamps(), cm, n, dt, 0.0, 0.0, gz,
+                                            solver::SubCycleContact{}, solver::BondLanes<0>{}, tb, false,
+                                            v.predictor_force, alt, v.start_sums};
+        SerialRun runner;
+        body(runner);
+    }
+
+    Outcome outcome() const { return Outcome{a.pos, a.vel, a.broken, a.alarm}; }
+};
+
+/// 12 sub-cycles of 3, 2, 1, 3, ... sub-steps from a bent, moving start under a steady
+/// hydrodynamic load and gravity; the keep box cuts the free end, so its particles freeze on
+/// the way and their bonds break.
+Outcome run(const Variant& v) {
+    Rig r(v);
+    solver::SolidArrays<solver::HostBuffer>& a = r.a;
     double xmin = 1e300, xmax = -1e300, zmax = -1e300;
     for (const Double3& p : a.pos) {
         xmin = std::min(xmin, p.x);
@@ -93,70 +132,32 @@ Outcome run(const Variant& v) {
         a.fluid_force[s] = Double3{-2e-3 * xi, 0.0, -5e-3 * (1.0 - xi)};
     }
     a.keep.maxz = zmax + 2e-4;  // the rising free end leaves it
-    std::vector<std::uint32_t> slot(a.n);
-    for (std::uint32_t s = 0; s < a.n; ++s) slot[s] = s;
-    std::vector<Double3> bpos(a.n);
-    std::vector<physics::Float4> bvelrho(a.n);
-    solver::ClampMotion cm;
-    cm.pos_initial = a.clamp_pos_initial.data();
-    cm.object = a.clamp_object.data();
-    cm.pos_start = a.clamp_start.data();
-    cm.pos_end = a.clamp_end.data();
-    const double dt = setup.dt;
     double t = 0;
     for (int c = 0; c < 12; ++c) {
         const int n = 3 - c % 3;
-        a.t0 = t;
-        a.span = dt * n;
-        const solver::SolidToBoundaryPass tb{slot.data(), a.pos.data(), a.vel.data(), a.fluid_force.data(), dt * n,
-                                             a.impulse.data(), a.work.data(), false, bpos.data(), bvelrho.data()};
-        Double3* alt = v.halves == HalfArrays::Two ? a.pos_half_alt.data() : a.pos_half.data();
-        const solver::SolidSubCycle<0> body{a.state(), a.bonds(), a.clamps(), cm, n, dt, 0.0, 0.0, -9.81,
-                                            solver::SubCycleContact{}, solver::BondLanes<0>{}, tb, false,
-                                            v.predictor_force, alt, v.start_sums};
-        SerialRun runner;
-        body(runner);
-        t += dt * n;
+        r.cycle(v, t, n, -9.81);
+        t += r.setup.dt * n;
     }
-    return Outcome{a.pos, a.vel, a.broken, a.alarm};
+    return r.outcome();
 }
 
 /// One bond of an interior particle at rest stretched just past the critical stretch at r^0 while
 /// the particle moves back fast enough that the bond is compressed at r^{1/2}: one sub-step.
 /// The four passes break it at r^0; a scheme without the sums pass at r^m would not.
-Outcome kick(const Variant& v) {
-    const solver::SolidSetup setup = cantileverSetup();
-    solver::SolidArrays<solver::HostBuffer> a;
-    a.init(setup);
+Outcome kick(Variant v) {
     const double crit = 1e-3;
-    for (physics::VcpmMaterial& m : a.materials) m.crit_stretch = crit;
-    a.pos_half_alt = a.pos;
+    v.crit_stretch = crit;
+    Rig r(v);
+    solver::SolidArrays<solver::HostBuffer>& a = r.a;
     const std::uint32_t s = a.n / 2, j = a.partner[s];  // slot 0 of s
     EXPECT_EQ(a.flags[s] & physics::kBondClamp, 0);
     const double dx = a.pos[j].x - a.pos[s].x, dz = a.pos[j].z - a.pos[s].z, len = std::sqrt(dx * dx + dz * dz);
-    const double ux = dx / len, uz = dz / len, dt = setup.dt;
+    const double ux = dx / len, uz = dz / len, dt = r.setup.dt;
     const double e = 1.01 * crit * len, w = 4.0 * crit * len / dt;  // dt/2 w = 2 crit len
     a.pos[s] = Double3{a.pos[s].x - e * ux, a.pos[s].y, a.pos[s].z - e * uz};
     a.vel[s] = Double3{w * ux, 0.0, w * uz};
-    std::vector<std::uint32_t> slot(a.n);
-    for (std::uint32_t i = 0; i < a.n; ++i) slot[i] = i;
-    std::vector<Double3> bpos(a.n);
-    std::vector<physics::Float4> bvelrho(a.n);
-    solver::ClampMotion cm;
-    cm.pos_initial = a.clamp_pos_initial.data();
-    cm.object = a.clamp_object.data();
-    cm.pos_start = a.clamp_start.data();
-    cm.pos_end = a.clamp_end.data();
-    a.t0 = 0;
-    a.span = dt;
-    const solver::SolidToBoundaryPass tb{slot.data(), a.pos.data(), a.vel.data(), a.fluid_force.data(), dt,
-                                         a.impulse.data(), a.work.data(), false, bpos.data(), bvelrho.data()};
-    const solver::SolidSubCycle<0> body{a.state(), a.bonds(), a.clamps(), cm, 1, dt, 0.0, 0.0, 0.0,
-                                        solver::SubCycleContact{}, solver::BondLanes<0>{}, tb, false,
-                                        v.predictor_force, a.pos_half_alt.data(), v.start_sums};
-    SerialRun runner;
-    body(runner);
-    return Outcome{a.pos, a.vel, a.broken, a.alarm};
+    r.cycle(v, 0.0, 1, 0.0);
+    return r.outcome();
 }
 
 bool sameBits(const Outcome& x, const Outcome& y) {
