@@ -11,6 +11,7 @@
 #include "core/format.h"
 #include "physics/blowup_bounds.h"
 #include "physics/solid_contact.h"
+#include "physics/vcpm_substep.h"
 #include "physics/vcpm_surface.h"
 #include "solver/solid_stability.h"
 #include "solver/solver_case.h"
@@ -84,6 +85,12 @@ SolidSetup makeSolidSetup(const SolverCase& c) {
                                ", sub-step limit " + shortText(dt_contact, 6) + " s");
     }
     s.dt = dt;
+    const bool force_at_start = physics::predictorForceUsed(s.materials.data(), s.materials.size(), s.contact_on);
+    const bool sums_at_start = physics::startSumsUsed(s.materials.data(), s.materials.size());
+    s.body_lines.push_back(force_at_start ? "sub-step: 4 passes (damping or contact read the predictor's velocity)"
+                           : sums_at_start ? "sub-step: 3 passes (the predictor's force changes nothing; its sums decide breakage)"
+                                           : "sub-step: 2 passes (the predictor's force changes nothing: undamped, unbreakable, "
+                                             "no contact)");
     // Solid particles beyond the domain by more than the kernel support are frozen (vcpm.h).
     s.keep = physics::solidKeepBox(physics::Double3{c.domain_min.x, c.domain_min.y, c.domain_min.z},
                                    physics::Double3{c.domain_max.x, c.domain_max.y, c.domain_max.z},

@@ -181,6 +181,9 @@ TEST(SolidSubStep, UndampedBodiesWithoutContactSkipThePredictorForce) {
     const solver::SolidSetup s = cantileverSetup();
     EXPECT_FALSE(physics::predictorForceUsed(s.materials.data(), s.materials.size(), false));
     EXPECT_FALSE(physics::startSumsUsed(s.materials.data(), s.materials.size()));
+    EXPECT_NE(std::find_if(s.body_lines.begin(), s.body_lines.end(),
+                           [](const std::string& l) { return l.rfind("sub-step: 2 passes", 0) == 0; }),
+              s.body_lines.end());  // the run log says which
     EXPECT_TRUE(physics::predictorForceUsed(s.materials.data(), s.materials.size(), true));  // contact
     std::vector<physics::VcpmMaterial> m = s.materials;
     m[0].damp_rate = 1.0;
