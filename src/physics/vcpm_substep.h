@@ -162,32 +162,30 @@ SEASPRING_HD inline void solidPredictorWith(std::uint32_t s, const SolidState& s
     st.pos_half[s] = solidHalfPosition(p, v, dth);
 }
 
-/// A particle outside st.keep at the predictor stays where it is, at rest (true: s is frozen,
-/// its predictor is done).
-SEASPRING_HD inline bool solidFrozenAtPredictor(std::uint32_t s, const SolidState& st) {
+/// A particle outside st.keep at the predictor stays where it is, at rest, its r^{m+1/2} (into
+/// `half`) its r^m (true: s is frozen, its predictor is done).
+SEASPRING_HD inline bool solidFrozenAt(std::uint32_t s, const SolidState& st, Double3* half) {
     if (!solidOutside(st.keep, st.pos[s])) return false;
     const Double3 rest{0, 0, 0};
     st.vel0[s] = rest;
     st.vel[s] = rest;
-    st.pos_half[s] = st.pos[s];
+    half[s] = st.pos[s];
     return true;
 }
 
+/// solidFrozenAt into st.pos_half (the four-pass sub-step's predictor).
+SEASPRING_HD inline bool solidFrozenAtPredictor(std::uint32_t s, const SolidState& st) {
+    return solidFrozenAt(s, st, st.pos_half);
+}
+
 /// The predictor without its force (when !predictorForceUsed), into `half` (r^{m+1/2}): v^m
-/// kept (in vel0 and vel) and r^{m+1/2}, or frozen as solidFrozenAtPredictor. The same r^{m+1/2}
+/// kept (in vel0 and vel) and r^{m+1/2}, or frozen (solidFrozenAt). The same r^{m+1/2}
 /// and v^m as solidPredictorWith; vel holds v^m instead of v^{m+1/2}, which nothing then reads.
 SEASPRING_HD inline void solidHalfStepAt(std::uint32_t s, const SolidState& st, double dt, Double3* half) {
-    const Double3 p = st.pos[s];
-    if (solidOutside(st.keep, p)) {
-        const Double3 rest{0, 0, 0};
-        st.vel0[s] = rest;
-        st.vel[s] = rest;
-        half[s] = p;
-        return;
-    }
+    if (solidFrozenAt(s, st, half)) return;
     const Double3 v = st.vel[s];
     st.vel0[s] = v;
-    half[s] = solidHalfPosition(p, v, 0.5 * dt);
+    half[s] = solidHalfPosition(st.pos[s], v, 0.5 * dt);
 }
 
 /// Corrector (Eqs. 22-23) for particle s, given its bond force `fi` at r^{m+1/2}:
