@@ -14,8 +14,10 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 }
 }  // namespace
 
-RunProgress::RunProgress(std::ostream& log, double interval, double tmax, std::uint32_t np)
-    : log_(log), interval_(interval), tmax_(tmax), np_(double(np)), start_(Clock::now()), last_line_(start_) {}
+RunProgress::RunProgress(std::ostream& log, double interval, double tmax, std::uint32_t np, double t0,
+                         long long step0)
+    : log_(log), interval_(interval), tmax_(tmax), np_(double(np)), t0_(t0), step0_(step0), start_(Clock::now()),
+      last_line_(start_) {}
 
 void RunProgress::afterStep(double t, long long step, double dt, std::uint32_t active_fluid,
                             long long dtmin_hits) {
@@ -24,9 +26,10 @@ void RunProgress::afterStep(double t, long long step, double dt, std::uint32_t a
     if (seconds(last_line_, now) < interval_) return;
     last_line_ = now;
     const double el = seconds(start_, now);
-    const double sps = step / el;
-    const double ns = el * 1e9 / (double(step) * np_);
-    const double eta = t > 0 ? el * (tmax_ - t) / t : 0;
+    const long long steps = step - step0_;  // of this run (a restart continues at step0_)
+    const double sps = steps / el;
+    const double ns = steps > 0 ? el * 1e9 / (double(steps) * np_) : 0;
+    const double eta = t > t0_ ? el * (tmax_ - t) / (t - t0_) : 0;
     char line[256];
     std::snprintf(line, sizeof line,
                   "t=%.5f/%.4g s  steps=%lld  dt=%.3e  %.1f steps/s  %.2f ns/particle/step  "

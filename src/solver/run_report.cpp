@@ -35,6 +35,7 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("not_finite", static_cast<long long>(s.excluded_not_finite));
     j.endObject();
     j.value("steps", s.steps);
+    j.value("steps_this_run", s.steps_run);  // loop_time_s and ns_per_particle_step are of these
     j.value("physical_time_s", s.physical_time);
     j.value("last_dt_s", s.dt_last);
     j.value("dtmin_hits", s.dtmin_hits);
@@ -116,6 +117,11 @@ void printSummary(std::ostream& os, const RunSummary& s) {
                   s.exit_code == 0 ? "Finished" : "Stopped", s.stop_reason.c_str(), s.steps, s.physical_time, s.wall_time, s.loop_time,
                   s.ns_per_particle_step);
     os << line;
+    if (!s.restarted_from.empty()) {  // the rates above are of this run's steps
+        std::snprintf(line, sizeof line, "  (%lld of them in this run, from t=%.6g s: %s)\n", s.steps_run, s.restart_time,
+                      s.restarted_from.c_str());
+        os << line;
+    }
     std::snprintf(line, sizeof line,
                   "Particles: %u (fluid %u, active at end %u); excluded: %u out of domain, %u density, %u "
                   "not finite; dt adjusted to DtMin %lld times; sorted at %llu of %llu divides\n",

@@ -31,7 +31,8 @@ struct RunSummary {
     std::uint32_t np = 0, nfixed = 0, nmoving = 0, nsolid = 0, nfluid = 0;
     std::uint32_t fluid_active = 0;
     std::uint32_t excluded_position = 0, excluded_density = 0, excluded_not_finite = 0;
-    long long steps = 0;
+    long long steps = 0;            ///< the step count reached (a restarted run counts on from its file's)
+    long long steps_run = 0;        ///< the steps this run made (= steps unless -restart)
     long long dtmin_hits = 0;
     unsigned long long divides = 0, sorts = 0;  ///< divides, and those that sorted (skin)
     double physical_time = 0, wall_time = 0, loop_time = 0;

@@ -113,7 +113,8 @@ RunSummary Simulation::run() {
     long long step = loop.step;
     bool warned_out = loop.warned_out;
     auto loopState = [&] { return LoopState{t, next_out, nextCheckpoint(t), step, warned_out}; };
-    RunProgress progress(log_, opt_.quiet ? 0.0 : opt_.progress_interval, tmax, sum_.np);
+    const long long step0 = step;  // where this run starts (-restart: the saved step)
+    RunProgress progress(log_, opt_.quiet ? 0.0 : opt_.progress_interval, tmax, sum_.np, t, step0);
     // OUTDIR/TERMINATE is looked for after the first step, then at most every 0.2 s of wall
     // time: a file-system call after every step is a measurable share of a small case's step.
     Clock::time_point next_terminate_look = Clock::now();
@@ -175,7 +176,8 @@ RunSummary Simulation::run() {
         }
     }
     const double loop_time = progress.elapsed();
-    timers.report(log_, step);
+    timers.report(log_, step - step0);
+    sum_.steps_run = step - step0;
     finish(t, step, loop_time, ctx.counters());
     sum_.wall_time = std::chrono::duration<double>(Clock::now() - t_start).count();
     return sum_;
@@ -198,7 +200,9 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     sum_.steps = step;
     sum_.physical_time = t;
     sum_.loop_time = loop_time;
-    sum_.ns_per_particle_step = step > 0 ? loop_time * 1e9 / (double(step) * double(sum_.np)) : 0;
+    // The loop's cost per step: the steps of this run (-restart continues a run at its step).
+    const long long run_steps = sum_.steps_run;
+    sum_.ns_per_particle_step = run_steps > 0 ? loop_time * 1e9 / (double(run_steps) * double(sum_.np)) : 0;
     sum_.dtmin_hits = counters.dtmin_hits;
     const DivideCounts dc = backend_->divideCounts();
     sum_.divides = dc.divides;
@@ -213,8 +217,8 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     }
     sum_.solid_dt = setup_.solid.dt;
     sum_.broken_bonds = brokenBonds(final_);
-    if (solid_only && step > 0)
-        sum_.ns_per_particle_step = loop_time * 1e9 / (double(step) * double(setup_.solid.nsolid));
+    if (solid_only && run_steps > 0)
+        sum_.ns_per_particle_step = loop_time * 1e9 / (double(run_steps) * double(setup_.solid.nsolid));
 }
 
 }  // namespace seaspring::solver

@@ -59,6 +59,13 @@ void expectSameFiles(const std::string& a, const std::string& b, const std::vect
     }
 }
 
+/// The integer after "key": in a run.json (-1 when absent).
+long long jsonInteger(const std::string& json, const std::string& key) {
+    const std::string k = "\"" + key + "\": ";
+    const std::size_t at = json.find(k);
+    return at == std::string::npos ? -1 : std::stoll(json.substr(at + k.size()));
+}
+
 /// Runs the case uninterrupted, then interrupted by -nsteps after a checkpoint and continued
 /// from OUTDIR/restart.h5 in the same OUTDIR (other options in `opts`, the continuation with
 /// `restart_backend`); everything must match.
@@ -84,6 +91,16 @@ void checkContinuation(const std::string& tag, const std::string& opts, const st
     const std::string log = test::readFile(cut + "/Run.out");
     EXPECT_NE(log.find("checkpoint t="), std::string::npos);
     EXPECT_NE(log.find("restarted from"), std::string::npos);
+    // The rates count this run's steps: the continuation made the steps the whole run made
+    // after the checkpoint, and says so (its loop time is spent on those alone).
+    const std::string ja = test::readFile(whole + "/run.json"), jc = test::readFile(cut + "/run.json");
+    const long long steps = jsonInteger(ja, "steps");
+    EXPECT_EQ(jsonInteger(ja, "steps_this_run"), steps);
+    EXPECT_EQ(jsonInteger(jc, "steps"), steps);
+    const long long cont = jsonInteger(jc, "steps_this_run");
+    EXPECT_GT(cont, 0);
+    EXPECT_LT(cont, steps - 100) << "the first run stopped at step 300, the checkpoint before it";
+    EXPECT_NE(c.out.find("(" + std::to_string(cont) + " of them in this run, from t="), std::string::npos) << c.out;
 }
 
 bool gpuUsable() {
