@@ -41,7 +41,12 @@
 #            2 s x steps per simulated second x ms per step. It assumes the window's rates hold
 #            for the whole run: the impacts shorten dt later and water leaves the domain (the
 #            seed went from 13.5 M to 8.4 M particles), so take it as an estimate of the order.
-#            A larger SLUICE_T0 (e.g. 0.2, the first impact) costs that much simulated time first.
+#            Measured at dp 2 mm (docs/performance-large.md, fifteenth session): the first 0.71 s
+#            cost 1.9x the default window's rate per simulated second, so the default estimate
+#            is about half of the whole run. A larger SLUICE_T0 (e.g. 0.2, the first impact)
+#            costs that much simulated time first (at dp 1 mm more than one device call; a
+#            restart file written at that time, -checkpoint, and BENCH_ARGS=-restart:FILE avoid
+#            it; with -restart the rates count only the continuation's steps).
 #
 # Every run: -sv:none -progress:0 (sluice: -progress:SLUICE_PROGRESS); the figures are read from
 # OUTDIR/run.json. Cases are generated once per dp with the new build's gencase and cached under

@@ -145,11 +145,12 @@ def cmd_memory(a):
 PROGRESS = re.compile(r"^t=([0-9.eE+-]+)/\S+ s\s+steps=(\d+)\s+dt=\S+\s+[0-9.]+ steps/s\s+([0-9.]+) ns/particle/step")
 BANNER_NP = re.compile(r"^\s*particles:\s*(\d+)")
 BANNER_DEVICE = re.compile(r"^\s*backend:\s*(\S+) \((.*)\)")
+BANNER_RESTART = re.compile(r"^\s*restarted from .* step (\d+)")
 
 
 def read_progress(log):
     """(particles, device, [(t, steps, elapsed_s)]) from a solver log with progress lines."""
-    np_, dev, pts = None, "", []
+    np_, dev, pts, step0 = None, "", [], 0
     try:
         with open(log, errors="replace") as f:
             for line in f:
@@ -159,10 +160,15 @@ def read_progress(log):
                 m = BANNER_DEVICE.match(line)
                 if m and not dev:
                     dev = m.group(2)
+                m = BANNER_RESTART.match(line)
+                if m:
+                    step0 = int(m.group(1))
                 m = PROGRESS.match(line)
                 if m and np_:
                     t, s, ns = float(m.group(1)), int(m.group(2)), float(m.group(3))
-                    pts.append((t, s, ns * 1e-9 * s * np_))  # the line's ns is loop time / (steps * particles)
+                    # The line's ns is loop time / (steps * particles), the steps of this run
+                    # (a -restart run continues at step0).
+                    pts.append((t, s, ns * 1e-9 * (s - step0) * np_))
     except OSError:
         pass
     return np_, dev, pts

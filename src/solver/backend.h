@@ -104,6 +104,9 @@ inline std::vector<std::uint32_t> gaugeSlotsOfIds(const std::vector<std::uint32_
 /// Backend::divideCounts.
 struct DivideCounts {
     std::uint64_t divides = 0, sorts = 0;
+    /// Sorts of the boundary block (cases with moving boundaries or solids; with a skin, only the
+    /// divides at which one of its particles left its grown cell).
+    std::uint64_t boundary_sorts = 0;
 };
 
 class Backend {

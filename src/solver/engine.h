@@ -98,10 +98,12 @@ public:
     void divide(bool keep_step_start) override {
         noForcesAhead("divide");
         ++counts_.divides;
-        if (refreshes() && exec_.reduce(refreshBegin(), nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid},
-                                        OrCombine{}) == 0u)
+        if (!refreshes()) {
+            sortBlocks(keep_step_start, kSortFluidBlock | kSortBoundaryBlock);
             return;
-        sortAll(keep_step_start);
+        }
+        const std::uint32_t verdict = exec_.reduce(refreshBegin(), nbound_ + nfluid_, 0u, refreshPass(), OrCombine{});
+        if (verdict != 0u) sortBlocks(keep_step_start, verdict);
     }
 
     void divideThenForces(bool keep_step_start) override {
@@ -109,11 +111,10 @@ public:
         ++counts_.divides;
         const bool gated = refreshes();
         if (gated) {  // the verdict stays on the device: it gates the evaluation's passes
-            exec_.reduceDeferred(refreshBegin(), nbound_ + nfluid_, 0u, RefreshPosCellPass{p_.view(), setup_.grid},
-                                 OrCombine{}, refresh_);
+            exec_.reduceDeferred(refreshBegin(), nbound_ + nfluid_, 0u, refreshPass(), OrCombine{}, refresh_);
             exec_.gate(refresh_.device());
         } else {
-            sortAll(keep_step_start);
+            sortBlocks(keep_step_start, kSortFluidBlock | kSortBoundaryBlock);
         }
         evaluateForces(true);
         exec_.gate(nullptr);
@@ -259,21 +260,36 @@ private:
     /// Only moving boundaries and solids move in the boundary block.
     std::uint32_t refreshBegin() const { return setup_.nmoving > 0 || solid_.n > 0 ? 0u : nbound_; }
 
-    /// The sort of a divide (see Backend::divide).
-    void sortAll(bool keep_step_start) {
+    /// The divide's skin test (refreshPosCellAt over the blocks whose particles move).
+    RefreshPosCellPass refreshPass() { return RefreshPosCellPass{p_.view(), setup_.grid, nbound_}; }
+
+    /// The sort of a divide (see Backend::divide): the blocks in `blocks` (kSortFluidBlock,
+    /// kSortBoundaryBlock), those a particle has left its grown cell in. A block left unsorted
+    /// keeps the cells and order of its last sort and the PosCell its skin test refreshed: its
+    /// particles are all still within the skin of those cells.
+    void sortBlocks(bool keep_step_start, std::uint32_t blocks) {
         ++counts_.sorts;
         sorted_ = true;
         const bool pre = !setup_.symplectic || keep_step_start;
         // Moving boundaries and solid particles move inside the boundary block: re-sort it, and
         // find the solid particles again. Fixed walls stay as init sorted them.
-        if (setup_.nmoving > 0 || solid_.n > 0) {
+        const bool movers = setup_.nmoving > 0 || solid_.n > 0;
+        const bool bound = (blocks & kSortBoundaryBlock) && movers;
+        if (bound) {
+            ++counts_.boundary_sorts;
             sortRange(0, nbound_, cs_bound_, pre);
             nearFlags(cs_bound_, physics::kNearBound);
             updateSolidSlots();
         }
-        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
-        nearFlags(cs_fluid_, physics::kNearFluid);
-        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
+        const bool fluid = (blocks & kSortFluidBlock) != 0u;
+        if (fluid) {
+            nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
+            nearFlags(cs_fluid_, physics::kNearFluid);
+        }
+        // PosCell from the new cells in the sorted blocks; fixed walls get theirs again (the same
+        // values); an unsorted block of moving particles keeps what its skin test refreshed.
+        const std::uint32_t b = movers && !bound ? nbound_ : 0u, e = fluid ? nbound_ + nfluid_ : nbound_;
+        if (e > b) exec_.template forEach<LaunchDefault>(b, e, PosCellPass{p_.view(), setup_.grid});
     }
 
     /// A force evaluation launched by divideThenForces, not yet taken by computeForces. `gated`:
@@ -289,9 +305,10 @@ private:
     void settleDivide() {
         if (!ahead_.on || !ahead_.gated) return;
         ahead_.gated = false;
-        if (refresh_.get() == 0u) return;
+        const std::uint32_t verdict = refresh_.get();
+        if (verdict == 0u) return;
         ahead_.on = false;
-        sortAll(ahead_.keep);
+        sortBlocks(ahead_.keep, verdict);
     }
     /// What changes the state cannot run between divideThenForces and computeForces (the
     /// evaluation launched ahead would be stale, and the SPS stress, mDBC's boundary values and

@@ -36,6 +36,7 @@ void Engine<Exec>::saveState(CheckpointData& out) {
     out.ints["engine/sorted"] = sorted_ ? 1 : 0;
     out.ints["engine/divides"] = (long long)counts_.divides;
     out.ints["engine/sorts"] = (long long)counts_.sorts;
+    out.ints["engine/boundary_sorts"] = (long long)counts_.boundary_sorts;
 }
 
 template <class Exec>
@@ -69,6 +70,9 @@ void Engine<Exec>::loadState(const CheckpointData& in) {
     sorted_ = in.integer("engine/sorted") != 0;
     counts_.divides = (unsigned long long)in.integer("engine/divides");
     counts_.sorts = (unsigned long long)in.integer("engine/sorts");
+    // A count only (files written before it was kept have none).
+    counts_.boundary_sorts =
+        in.has("engine/boundary_sorts") ? (unsigned long long)in.integer("engine/boundary_sorts") : 0ull;
 }
 
 }  // namespace seaspring::solver

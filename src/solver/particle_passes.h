@@ -97,10 +97,16 @@ struct PosCellPass {
 
 /// Between two sorts: refreshes particle i's PosCell in its cell; 1 when a sort is due
 /// (reduced with OrCombine; each index is visited once).
+/// The divide's verdict, OR-combined: kSortFluidBlock and/or kSortBoundaryBlock when a particle of
+/// that block has left its grown cell (physics::refreshPosCellAt), 0 when no block needs a sort.
+constexpr std::uint32_t kSortFluidBlock = 1u, kSortBoundaryBlock = 2u;
 struct RefreshPosCellPass {
     physics::ParticleView v;
     physics::CellGrid g;
-    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const { return physics::refreshPosCellAt(i, v, g); }
+    std::uint32_t nbound;
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const {
+        return physics::refreshPosCellAt(i, v, g) * (i < nbound ? kSortBoundaryBlock : kSortFluidBlock);
+    }
 };
 
 struct OrCombine {

@@ -352,7 +352,8 @@ Backend:
 Run control:
   -tmax:T              simulated time T > 0 [s] (overrides TimeMax)
   -tout:T              output interval T > 0 [s] (overrides TimeOut)
-  -nsteps:N            stop after N >= 0 time steps (tests, benchmarks)
+  -nsteps:N            stop at step N >= 0 (tests, benchmarks); after -restart the count
+                       goes on from the restart file's step, as the interrupted run's did
   -overwrite           OUTDIR holds an earlier run: remove its files (Run.out, run.json,
                        parts.xdmf, data/, vtk/, gauges/, ledger.csv) and run; without it
                        such an OUTDIR is refused (the case files there are kept)

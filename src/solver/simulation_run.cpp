@@ -207,6 +207,7 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     const DivideCounts dc = backend_->divideCounts();
     sum_.divides = dc.divides;
     sum_.sorts = dc.sorts;
+    sum_.boundary_sorts = dc.boundary_sorts;
     sum_.solid_substeps = counters.solid_substeps;
     sum_.omega_max = counters.omega_max;
     if (setup_.solid.empty()) return;
