@@ -95,10 +95,10 @@ struct PosCellPass {
     SEASPRING_HD void operator()(std::uint32_t i) const { physics::posCellAt(i, v, g); }
 };
 
-/// Between two sorts: refreshes particle i's PosCell in its cell; 1 when a sort is due
-/// (reduced with OrCombine; each index is visited once).
-/// The divide's verdict, OR-combined: kSortFluidBlock and/or kSortBoundaryBlock when a particle of
-/// that block has left its grown cell (physics::refreshPosCellAt), 0 when no block needs a sort.
+/// Between two sorts: refreshes particle i's PosCell in its cell and gives the divide's verdict
+/// for it (reduced with OrCombine; each index is visited once): kSortFluidBlock or
+/// kSortBoundaryBlock, by i's block, when i has left its grown cell or was excluded
+/// (physics::refreshPosCellAt), else 0. The OR is 0 when no block needs a sort.
 constexpr std::uint32_t kSortFluidBlock = 1u, kSortBoundaryBlock = 2u;
 struct RefreshPosCellPass {
     physics::ParticleView v;
