@@ -63,13 +63,13 @@ if ((ncu_steps > 0)) && command -v ncu >/dev/null; then
   say "== GPU time per pass, $ncu_steps steps after the restart (new build; Nsight Compute)"
   ncu --clock-control none --print-units base --metrics gpu__time_duration.sum --csv \
     "$new/seaspring" -overwrite "${args[@]}" -nsteps:$((ck + ncu_steps)) -restart:"$work/restart.h5" "$kase" \
-    "$work/n" 2>/dev/null | grep -v '^==' >"$work/ncu.csv"
+    "$work/n" 2>/dev/null | grep '^"' >"$work/ncu.csv"  # the CSV rows only (the solver's own lines share stdout)
   /usr/bin/python3 - "$work/ncu.csv" "$ncu_steps" <<'PY' | tee -a "$table"
 import collections, csv, re, sys
 t, n = collections.Counter(), collections.Counter()
 for r in csv.DictReader(open(sys.argv[1])):
     name = r.get("Kernel Name", "")
-    m = re.findall(r"(?:solver|physics)::(\w+Pass)\b", name) or re.findall(r"cub::\w*?(\w+Kernel)", name)
+    m = re.findall(r"(?:solver|physics)::(\w+Pass)\b", name) or re.findall(r"::(\w+Kernel)\b", name)
     key = m[0] if m else name[:48]
     try:
         v = float(r["Metric Value"].replace(",", ""))
