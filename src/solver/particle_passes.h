@@ -39,24 +39,33 @@ struct GatherPass {
     SEASPRING_HD void operator()(std::uint32_t i) const { dst[i] = src[perm[i]]; }
 };
 
-/// A field of `words` words W per element, gathered one word (k) at a time through a scratch
-/// of one word per particle: dst[i] = word k of element perm[i].
-template <typename W>
-struct GatherWordPass {
+/// A field of `words` words W per element, gathered `K` words at a time (words [k, k + K)) through
+/// a scratch of K words per particle: dst[i] = words [k, k + K) of element perm[i].
+template <typename W, std::uint32_t K>
+struct GatherWordsPass {
     const std::uint32_t* perm;
     const W* src;
     std::uint32_t words, k;
     W* dst;
-    SEASPRING_HD void operator()(std::uint32_t i) const { dst[i] = src[std::size_t(perm[i]) * words + k]; }
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        const W* s = src + std::size_t(perm[i]) * words + k;
+        W* d = dst + std::size_t(i) * K;
+        for (std::uint32_t q = 0; q < K; ++q) d[q] = s[q];
+    }
 };
 
-/// Word k of element i = src[i] (puts a GatherWordPass's result back).
-template <typename W>
-struct PutWordPass {
+/// Words [k, k + K) of element i = the scratch's K words of i (puts a GatherWordsPass's result
+/// back).
+template <typename W, std::uint32_t K>
+struct PutWordsPass {
     const W* src;
     std::uint32_t words, k;
     W* dst;
-    SEASPRING_HD void operator()(std::uint32_t i) const { dst[std::size_t(i) * words + k] = src[i]; }
+    SEASPRING_HD void operator()(std::uint32_t i) const {
+        const W* s = src + std::size_t(i) * K;
+        W* d = dst + std::size_t(i) * words + k;
+        for (std::uint32_t q = 0; q < K; ++q) d[q] = s[q];
+    }
 };
 
 struct CellStartOuterPass {

@@ -38,8 +38,19 @@ SortMemory sortMemoryOf(Store& p) {
                       alt, reinterpret_cast<std::uint32_t*>(alt + p.acear.size()), alt};
 }
 
+/// Words [k, k + K) of every element of [b, e) reordered by the permutation, through the scratch.
+template <std::uint32_t K, class Exec, class W>
+void gatherWords(Exec& exec, W* words, std::uint32_t n_words, std::uint32_t k, std::uint32_t b, std::uint32_t e,
+                 const SortMemory& m) {
+    static_assert(K * sizeof(W) <= sizeof(physics::Float4), "a chunk fits the 16-byte scratch");
+    W* tmp = reinterpret_cast<W*>(m.scratch);  // particle i's slot: tmp + i * K (K words <= 16 bytes)
+    exec.template forEach<LaunchDefault>(b, e, GatherWordsPass<W, K>{m.perm, words, n_words, k, tmp});
+    exec.template forEach<LaunchDefault>(b, e, PutWordsPass<W, K>{tmp, n_words, k, words});
+}
+
 /// Reorders [b, e) of a sorted field by the permutation of the last sort, through the 16-byte
-/// scratch (wider fields one word at a time).
+/// scratch: a field of up to 16 bytes whole, a wider one in chunks of up to 16 bytes (a gather
+/// and a put-back each; Double3 and SymTensor, 24 bytes: two chunks).
 template <class Exec, class BufT>
 void gatherSorted(Exec& exec, BufT& arr, std::uint32_t b, std::uint32_t e, const SortMemory& m) {
     using T = std::remove_pointer_t<decltype(arr.data())>;
@@ -53,11 +64,15 @@ void gatherSorted(Exec& exec, BufT& arr, std::uint32_t b, std::uint32_t e, const
                                      std::uint64_t, std::uint32_t>;
         static_assert(sizeof(T) % sizeof(W) == 0, "a field is a whole number of words");
         constexpr std::uint32_t kWords = sizeof(T) / sizeof(W);
+        constexpr std::uint32_t kChunk = std::uint32_t(sizeof(physics::Float4) / sizeof(W));  // words per chunk
         W* words = reinterpret_cast<W*>(arr.data());
-        W* tmp = reinterpret_cast<W*>(m.scratch);
-        for (std::uint32_t k = 0; k < kWords; ++k) {
-            exec.template forEach<LaunchDefault>(b, e, GatherWordPass<W>{m.perm, words, kWords, k, tmp});
-            exec.template forEach<LaunchDefault>(b, e, PutWordPass<W>{tmp, kWords, k, words});
+        std::uint32_t k = 0;
+        for (; k + kChunk <= kWords; k += kChunk) gatherWords<kChunk>(exec, words, kWords, k, b, e, m);
+        if constexpr (kWords % kChunk >= 2) {
+            static_assert(kWords % kChunk == 2, "the last chunk of the fields there are");
+            gatherWords<2>(exec, words, kWords, k, b, e, m);
+        } else if constexpr (kWords % kChunk == 1) {
+            gatherWords<1>(exec, words, kWords, k, b, e, m);
         }
     }
 }
