@@ -61,9 +61,6 @@ struct BackendSetup {
     /// two <= physics::kMaxPairLanes.
     std::uint32_t pair_lanes = 1;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
-    /// -skinmax: the largest skin [m] the divide may grow grid.skinf to (Engine::adaptSkin);
-    /// at most grid.skinf: the skin stays grid.skinf.
-    float skin_max = 0.f;
 };
 
 /// State copied back to the host, in id order: the particle fields flagged physics::kHost or
@@ -110,7 +107,6 @@ struct DivideCounts {
     /// Sorts of the boundary block (cases with moving boundaries or solids; with a skin, only the
     /// divides at which one of its particles left its grown cell).
     std::uint64_t boundary_sorts = 0;
-    double skin = 0;  ///< the skin now, a fraction of the cell (-skinmax lets it change)
 };
 
 class Backend {

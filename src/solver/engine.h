@@ -58,8 +58,6 @@ public:
         setup_ = s;
         sorted_ = false;
         counts_ = DivideCounts{};
-        skin_base_ = s.grid.skinf;
-        last_sort_divide_ = 0;
         nbound_ = s.nbound;
         nfluid_ = s.nfluid;
         const std::size_t np = std::size_t(s.nbound) + s.nfluid;
@@ -226,11 +224,7 @@ public:
         gauges_.answer(exec_, setup_, cs_fluid_.data(), p_.view(), nbound_, out);
     }
 
-    DivideCounts divideCounts() const override {
-        DivideCounts c = counts_;
-        c.skin = setup_.grid.cellsize > 0 ? double(setup_.grid.skinf) / setup_.grid.cellsize : 0.0;
-        return c;
-    }
+    DivideCounts divideCounts() const override { return counts_; }
     std::uint32_t activeFluid() override {
         settleDivide();
         return nfluid_;
@@ -296,23 +290,6 @@ private:
         // values); an unsorted block of moving particles keeps what its skin test refreshed.
         const std::uint32_t b = movers && !bound ? nbound_ : 0u, e = fluid ? nbound_ + nfluid_ : nbound_;
         if (e > b) exec_.template forEach<LaunchDefault>(b, e, PosCellPass{p_.view(), setup_.grid});
-        adaptSkin();
-    }
-
-    /// -skinmax (BackendSetup::skin_max): after a sort every particle lies in its cell, so any
-    /// skin holds from here on. Where the sorts come at every kSkinGrowWithin-th divide or more
-    /// often, the skin doubles (up to skin_max); after kSkinShrinkAfter divides without one it
-    /// halves (down to -skin). Decided from the divide counts alone (the same on every backend);
-    /// doubling and halving a float are exact.
-    static constexpr std::uint64_t kSkinGrowWithin = 4, kSkinShrinkAfter = 64;
-    void adaptSkin() {
-        const std::uint64_t since = counts_.divides - last_sort_divide_;
-        const bool first = last_sort_divide_ == 0;
-        last_sort_divide_ = counts_.divides;
-        float& skin = setup_.grid.skinf;
-        if (setup_.skin_max <= skin_base_ || first) return;
-        if (since <= kSkinGrowWithin) skin = std::min(2.f * skin, setup_.skin_max);
-        else if (since >= kSkinShrinkAfter) skin = std::max(0.5f * skin, skin_base_);
     }
 
     /// A force evaluation launched by divideThenForces, not yet taken by computeForces. `gated`:
@@ -492,8 +469,6 @@ private:
     std::uint32_t nbound_ = 0, nfluid_ = 0;
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)
     DivideCounts counts_;
-    float skin_base_ = 0.f;                 ///< the run's -skin [m]: adaptSkin's floor
-    std::uint64_t last_sort_divide_ = 0;    ///< counts_.divides at the last sort (0: none yet)
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch

@@ -37,8 +37,6 @@ void Engine<Exec>::saveState(CheckpointData& out) {
     out.ints["engine/divides"] = (long long)counts_.divides;
     out.ints["engine/sorts"] = (long long)counts_.sorts;
     out.ints["engine/boundary_sorts"] = (long long)counts_.boundary_sorts;
-    out.ints["engine/last_sort_divide"] = (long long)last_sort_divide_;
-    out.reals["engine/skin"] = setup_.grid.skinf;
 }
 
 template <class Exec>
@@ -75,10 +73,6 @@ void Engine<Exec>::loadState(const CheckpointData& in) {
     // A count only (files written before it was kept have none).
     counts_.boundary_sorts =
         in.has("engine/boundary_sorts") ? (unsigned long long)in.integer("engine/boundary_sorts") : 0ull;
-    // -skinmax's state (files written before it have the fixed skin and no count).
-    if (in.has("engine/skin")) setup_.grid.skinf = float(in.real("engine/skin"));
-    last_sort_divide_ =
-        in.has("engine/last_sort_divide") ? (unsigned long long)in.integer("engine/last_sort_divide") : counts_.divides;
 }
 
 }  // namespace seaspring::solver

@@ -10,7 +10,6 @@
 #include <cerrno>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -111,7 +110,6 @@ void declareOptions(CLI::App& app) {
     value("--partbegin")->excludes(restart);
     value("--cellmode");
     value("--skin");
-    value("--skinmax");
     value("--pairlanes");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
@@ -259,11 +257,6 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (*o.skin > physics::kMaxSkinFraction)
                 usageError(g.arg + ": " + g.value + " is larger than 0.5" +
                            " (the skin is a fraction of the cell size)");
-        } else if (name == "skinmax") {
-            o.skin_max = toDouble(g, Range::Positive);
-            if (*o.skin_max > physics::kMaxSkinFraction)
-                usageError(g.arg + ": " + g.value + " is larger than 0.5" +
-                           " (the skin is a fraction of the cell size)");
         } else if (name == "pairlanes") {
             o.pair_lanes = int(toInteger(g, 0, physics::kMaxPairLanes, " (pair lanes: 1, 2, 4 or 8; 0: auto)"));
             if ((o.pair_lanes & (o.pair_lanes - 1)) != 0)
@@ -333,12 +326,6 @@ RunOptions parseRunOptions(int argc, const char* const* argv) {
         usageError(rewrite(e.what()));
     }
     readValues(given, o);
-    if (o.skin_max && *o.skin_max <= o.skin.value_or(physics::kDefaultSkinFraction)) {
-        char line[160];
-        std::snprintf(line, sizeof line, "-skinmax:%g is not larger than the skin (%g): it could never grow",
-                      *o.skin_max, o.skin.value_or(physics::kDefaultSkinFraction));
-        usageError(line);
-    }
     if (positional.size() < 2)
         usageError(std::string(positional.empty() ? "OUTDIR/NAME and OUTDIR are missing"
                                                   : "OUTDIR is missing") +
@@ -407,11 +394,6 @@ Run control:
                        0: sorted twice per step, as DualSPHysics. Results depend on it
                        at rounding level (the neighbour order), so hashes compare runs
                        of the same skin
-  -skinmax:F           let the skin grow, doubling at a sort up to F (-skin < F <= 0.5), while
-                       sorts come at every 4th divide or more often (violent flow), and
-                       halve back towards -skin once 64 divides pass without one; the
-                       choice follows the divide counts, so CPU and GPU make it alike.
-                       Default: the skin stays -skin
   -pairlanes:N         pair lanes of the fluid loop, 1, 2, 4 or 8: each fluid particle's
                        candidates are split over N partial sums, added pairwise at the
                        end; the GPU runs one thread per lane, so small cases get more

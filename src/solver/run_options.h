@@ -39,10 +39,6 @@ struct RunOptions {
     /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
     /// at every divide); unset: kDefaultSkinFraction (physics/cell_grid.h).
     std::optional<double> skin;
-    /// -skinmax:F: the skin may grow at a sort, doubling up to F cells (skin < F <= 0.5), where
-    /// sorts come at every few divides, and shrinks back towards -skin where they are rare
-    /// (Engine::adaptSkin); unset: the skin stays -skin.
-    std::optional<double> skin_max;
     /// -pairlanes:N: pair lanes of the fluid loop, a power of two 1..physics::kMaxPairLanes
     /// (physics/fluid_interaction.h); 0 (auto): resolvePairLanes.
     int pair_lanes = 0;

@@ -42,7 +42,6 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("divides", static_cast<long long>(s.divides));
     j.value("sorts", static_cast<long long>(s.sorts));
     j.value("boundary_sorts", static_cast<long long>(s.boundary_sorts));
-    if (s.skin_end >= 0) j.value("skin_at_end", s.skin_end);
     j.value("wall_time_s", s.wall_time);
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);
@@ -132,10 +131,6 @@ void printSummary(std::ostream& os, const RunSummary& s) {
     os << line;
     if (s.nmoving > 0 || s.nsolid > 0) {  // the boundary block is sorted only when its movers need it
         std::snprintf(line, sizeof line, " (the boundary block at %llu)", s.boundary_sorts);
-        os << line;
-    }
-    if (s.skin_end >= 0) {  // -skinmax
-        std::snprintf(line, sizeof line, "; skin at the end %g cell", s.skin_end);
         os << line;
     }
     os << "\n";

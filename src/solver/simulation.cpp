@@ -33,8 +33,7 @@ std::string fmt(const char* f, double v) {
 const char* kernelName(int k) { return k == 1 ? "cubic spline" : "Wendland C2"; }
 }  // namespace
 
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes,
-                            double skin_max) {
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes) {
     std::ostringstream s;
     s << dim << "D, " << (p.step_algorithm == 2 ? "symplectic" : "Verlet");
     if (p.step_algorithm == 1) s << " (Euler every " << p.verlet_steps << ")";
@@ -52,7 +51,6 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     else s << ", DBC";
     s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
     if (skin > 0) s << " with a skin of " << skin << " cell";
-    if (skin > 0 && skin_max > skin) s << " growing to " << skin_max << " where sorts are frequent";
     if (pair_lanes > 1) s << ", " << pair_lanes << " pair lanes";
     return s.str();
 }
@@ -81,7 +79,6 @@ std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes) {
 }
 
 double resolveSkin(const RunOptions& o) { return o.skin.value_or(physics::kDefaultSkinFraction); }
-double resolveSkinMax(const RunOptions& o) { return o.skin_max.value_or(0.0); }
 
 static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
     const ParticleSet& ps = c.particles;
@@ -118,7 +115,7 @@ static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
     return m;
 }
 
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes, double skin_max) {
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes) {
     using namespace physics;
     cell_div = resolveCellDiv(c, cell_div);
     const ParticleSet& ps = c.particles;
@@ -165,7 +162,6 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, in
         throwInputError(c.xml_path, 0, "the simulation domain is too large for the cell grid (" +
                         std::to_string(s.grid.ncx) + " x " + std::to_string(s.grid.ncy) + " x " +
                         std::to_string(s.grid.ncz) + " cells of " + fmt("%g", s.grid.cellsize) + " m)");
-    if (skin > 0 && skin_max > skin) s.skin_max = float(skin_max * s.grid.cellsize);
     StepConstants& st = s.step;
     st.gx = c.constants.gravity.x;
     st.gy = c.constants.gravity.y;
@@ -219,7 +215,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
-    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o), o.pair_lanes, resolveSkinMax(o));
+    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o), o.pair_lanes);
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
@@ -243,8 +239,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
     sum_.options =
-        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes,
-                        setup_.skin_max > 0.f ? resolveSkinMax(o) : 0.0);
+        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (setup_.mdbc.enabled)

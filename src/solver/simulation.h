@@ -36,7 +36,6 @@ struct RunSummary {
     long long dtmin_hits = 0;
     unsigned long long divides = 0, sorts = 0;  ///< divides, and those that sorted (skin)
     unsigned long long boundary_sorts = 0;      ///< sorts that included the boundary block (movers)
-    double skin_end = -1;                       ///< -skinmax: the skin at the end [cells] (-1: fixed)
     double physical_time = 0, wall_time = 0, loop_time = 0;
     double ns_per_particle_step = 0;
     double dt_last = 0;
@@ -66,8 +65,7 @@ struct RunSummary {
 /// Builds the backend's initial data from the case (particles in id order); cells of
 /// 2h/cell_div (resolveCellDiv) with a skin of `skin` cells (cell_grid.h).
 /// `pair_lanes`: as RunOptions::pair_lanes (0: resolvePairLanes's choice).
-/// `skin_max` (-skinmax, a fraction of the cell; 0: none): how far the skin may grow.
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0, double skin_max = 0);
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0);
 /// Fluid particles from which one pair lane suffices (resolvePairLanes).
 constexpr std::uint32_t kPairLaneThreads = 98304;
 /// The most pair lanes resolvePairLanes chooses.
@@ -81,8 +79,6 @@ constexpr std::uint32_t kAutoPairLanesMax = 4;
 std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
 /// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
 double resolveSkin(const RunOptions& o);
-/// The largest skin a run's may grow to: -skinmax, else 0 (it stays).
-double resolveSkinMax(const RunOptions& o);
 /// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) in 3D 4
 /// where h >= 2 dp (cells of h/2 at least dp wide), else 3 (on an H100,
 /// SPHERIC Test 2 at 4.4 M particles, h = 2 dp, runs 13% faster than with cells of h; 2h/3 where
@@ -180,8 +176,7 @@ private:
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir);
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
-/// `skin_max` > `skin`: the skin may grow to it (-skinmax).
 std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin,
-                            std::uint32_t pair_lanes = 1, double skin_max = 0);
+                            std::uint32_t pair_lanes = 1);
 
 }  // namespace seaspring::solver

@@ -208,7 +208,6 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     sum_.divides = dc.divides;
     sum_.sorts = dc.sorts;
     sum_.boundary_sorts = dc.boundary_sorts;
-    if (setup_.skin_max > 0.f) sum_.skin_end = dc.skin;
     sum_.solid_substeps = counters.solid_substeps;
     sum_.omega_max = counters.omega_max;
     if (setup_.solid.empty()) return;
