@@ -58,28 +58,66 @@ SEASPRING_HD inline void cellStartOuterAt(std::uint32_t c, std::uint32_t b, std:
 /// every axis (the search box of any point of c). A fluid particle skips the boundary block,
 /// and a boundary particle (DBC continuity, hydrodynamic force on a solid) skips the fluid
 /// block, where its cell's bit is clear: the block holds no candidate there, so the flags
-/// change no result. Built from the block's cell ranges in three passes (cellOccupiedAt, then
-/// dilateCellsAt along x, y and z), leaving the other block's bit as it is, whenever the
-/// block is sorted (the boundary block once unless boundaries move; the fluid block at every
-/// sort, which the skin makes rare). Integer only.
+/// change no result. Built whenever the block is sorted (the boundary block once unless
+/// boundaries move; the fluid block at every sort, which the skin makes rare), leaving the
+/// other block's bit as it is, in three passes through a scratch byte per cell `t`, each pass
+/// extending the box along one axis: nearAlongXAt per cell (the block's cell ranges are
+/// monotone, so a run of cells holds a particle iff the range from its first cell's start to
+/// its last cell's end is not empty: two loads, no loop), then nearAlongYColumn per column of
+/// cells along y (in place in `t`), then nearAlongZColumn per column along z (from `t` into
+/// near). A column is swept once with a window of 2 range + 1 cells kept as bits of a shift
+/// register. Integer only, so any execution order gives the same flags.
 constexpr std::uint8_t kNearBound = 1u, kNearFluid = 2u;
-SEASPRING_HD inline void cellOccupiedAt(std::uint32_t c, const std::uint32_t* cell_start, std::uint8_t bit,
-                                        std::uint8_t* near) {
-    const std::uint8_t others = std::uint8_t(near[c] & std::uint8_t(~bit));
-    near[c] = std::uint8_t(others | (cell_start[c] != cell_start[c + 1] ? bit : 0u));
+
+/// t[c] = `bit` if the block (cell ranges `cell_start`) has a particle within g.range cells of
+/// c along x (in c's row), else 0.
+SEASPRING_HD inline void nearAlongXAt(std::uint32_t c, const CellGrid& g, const std::uint32_t* cell_start,
+                                      std::uint8_t bit, std::uint8_t* t) {
+    const std::uint32_t nx = std::uint32_t(g.ncx), r = std::uint32_t(g.range);
+    const std::uint32_t x = c % nx;
+    const std::uint32_t lo = c - (x < r ? x : r), hi = c + (nx - 1u - x < r ? nx - 1u - x : r);
+    t[c] = cell_start[hi + 1u] != cell_start[lo] ? bit : std::uint8_t(0);
 }
-/// Bit `bit` of out[c] = OR of that bit of in[] over the cells within g.range of c along
-/// `axis` (0 x, 1 y, 2 z); the other bits of in[c] are copied.
-SEASPRING_HD inline void dilateCellsAt(std::uint32_t c, int axis, const CellGrid& g, std::uint8_t bit,
-                                       const std::uint8_t* in, std::uint8_t* out) {
-    const std::uint32_t nx = std::uint32_t(g.ncx), nxy = nx * std::uint32_t(g.ncy);
-    const std::uint32_t stride = axis == 0 ? 1u : (axis == 1 ? nx : nxy);
-    const int n = axis == 0 ? g.ncx : (axis == 1 ? g.ncy : g.ncz);
-    const int k = int(axis == 0 ? c % nx : (axis == 1 ? (c / nx) % std::uint32_t(g.ncy) : c / nxy));
-    const std::uint32_t base = c - std::uint32_t(k) * stride;
-    std::uint8_t any = 0;
-    for (int m = maxi(k - g.range, 0); m <= mini(k + g.range, n - 1); ++m) any |= in[base + std::uint32_t(m) * stride];
-    out[c] = std::uint8_t((in[c] & std::uint8_t(~bit)) | (any & bit));
+
+/// The window of 2 range + 1 cells of a column sweep: bit k of `hist` holds whether the cell k
+/// places behind the newest one pushed was set.
+SEASPRING_HD inline std::uint32_t nearWindowMask(const CellGrid& g) { return (2u << (2 * g.range)) - 1u; }
+
+/// Column q = x + ncx z of cells along y: t[x, y, z] = `bit` where t was non-zero within g.range
+/// cells along y, else 0 (in place: each cell's value is pushed into the window before it is
+/// overwritten).
+SEASPRING_HD inline void nearAlongYColumn(std::uint32_t q, const CellGrid& g, std::uint8_t bit, std::uint8_t* t) {
+    const std::uint32_t nx = std::uint32_t(g.ncx);
+    const int ny = g.ncy, r = g.range;
+    std::uint8_t* col = t + (q % nx) + std::size_t(q / nx) * nx * std::uint32_t(ny);
+    const std::uint32_t mask = nearWindowMask(g);
+    std::uint32_t hist = 0;
+    for (int y = 0; y < r && y < ny; ++y) hist = (hist << 1) | (col[std::size_t(y) * nx] != 0 ? 1u : 0u);
+    for (int y = 0; y < ny; ++y) {
+        const int ahead = y + r;
+        hist = (hist << 1) | (ahead < ny && col[std::size_t(ahead) * nx] != 0 ? 1u : 0u);
+        col[std::size_t(y) * nx] = (hist & mask) != 0u ? bit : std::uint8_t(0);
+    }
+}
+
+/// Column q = x + ncx y of cells along z: bit `bit` of near[x, y, z] = whether t is non-zero
+/// within g.range cells along z; near's other bits are kept.
+SEASPRING_HD inline void nearAlongZColumn(std::uint32_t q, const CellGrid& g, std::uint8_t bit, const std::uint8_t* t,
+                                          std::uint8_t* near) {
+    const std::size_t nxy = std::size_t(g.ncx) * std::uint32_t(g.ncy);
+    const int nz = g.ncz, r = g.range;
+    const std::uint8_t* tc = t + q;
+    std::uint8_t* nc = near + q;
+    const std::uint32_t mask = nearWindowMask(g);
+    const std::uint8_t keep = std::uint8_t(~bit);
+    std::uint32_t hist = 0;
+    for (int z = 0; z < r && z < nz; ++z) hist = (hist << 1) | (tc[std::size_t(z) * nxy] != 0 ? 1u : 0u);
+    for (int z = 0; z < nz; ++z) {
+        const int ahead = z + r;
+        hist = (hist << 1) | (ahead < nz && tc[std::size_t(ahead) * nxy] != 0 ? 1u : 0u);
+        std::uint8_t& f = nc[std::size_t(z) * nxy];
+        f = std::uint8_t((f & keep) | ((hist & mask) != 0u ? bit : 0u));
+    }
 }
 
 /// PosCell of particle i.

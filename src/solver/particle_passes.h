@@ -82,20 +82,29 @@ struct CellStartFillPass {
     SEASPRING_HD void operator()(std::uint32_t k) const { physics::cellStartFillAt(k, b, keys, cell_start); }
 };
 
-struct CellOccupiedPass {
+struct NearAlongXPass {
+    physics::CellGrid g;
     const std::uint32_t* cell_start;
     std::uint8_t bit;
-    std::uint8_t* near;
-    SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellOccupiedAt(c, cell_start, bit, near); }
+    std::uint8_t* t;
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::nearAlongXAt(c, g, cell_start, bit, t); }
 };
 
-struct DilateCellsPass {
-    int axis;
+/// One thread per column of cells along y (index x + ncx z).
+struct NearAlongYPass {
     physics::CellGrid g;
     std::uint8_t bit;
-    const std::uint8_t* in;
-    std::uint8_t* out;
-    SEASPRING_HD void operator()(std::uint32_t c) const { physics::dilateCellsAt(c, axis, g, bit, in, out); }
+    std::uint8_t* t;
+    SEASPRING_HD void operator()(std::uint32_t q) const { physics::nearAlongYColumn(q, g, bit, t); }
+};
+
+/// One thread per column of cells along z (index x + ncx y).
+struct NearAlongZPass {
+    physics::CellGrid g;
+    std::uint8_t bit;
+    const std::uint8_t* t;
+    std::uint8_t* near;
+    SEASPRING_HD void operator()(std::uint32_t q) const { physics::nearAlongZColumn(q, g, bit, t, near); }
 };
 
 struct PosCellPass {

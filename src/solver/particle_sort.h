@@ -96,19 +96,17 @@ std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, s
     return active_end;
 }
 
-/// Bit `bit` of the per-cell near flags `near` from the cell ranges `cs` of its block
-/// (physics::cellOccupiedAt, then dilateCellsAt along x, y, z through `tmp`; the other bit is
-/// kept).
+/// Bit `bit` of the per-cell near flags `near` from the cell ranges `cs` of its block, through
+/// the scratch `tmp` (physics::nearAlongXAt per cell, nearAlongYColumn and nearAlongZColumn per
+/// column; the other bit is kept).
 template <class Exec, class CellStarts, class Flags>
 void nearFlagsOfBlock(Exec& exec, const physics::CellGrid& g, const CellStarts& cs, std::uint8_t bit, Flags& near,
                       Flags& tmp) {
-    const std::uint32_t nc = g.cellCount();
+    const std::uint32_t nx = std::uint32_t(g.ncx), ny = std::uint32_t(g.ncy), nz = std::uint32_t(g.ncz);
     std::uint8_t *a = near.data(), *t = tmp.data();
-    exec.template forEach<LaunchDefault>(0u, nc, CellOccupiedPass{cs.data(), bit, a});
-    exec.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{0, g, bit, a, t});
-    exec.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{1, g, bit, t, a});
-    exec.template forEach<LaunchDefault>(0u, nc, DilateCellsPass{2, g, bit, a, t});
-    exec.copy(a, t, nc);
+    exec.template forEach<LaunchDefault>(0u, g.cellCount(), NearAlongXPass{g, cs.data(), bit, t});
+    if (ny > 1u) exec.template forEach<LaunchDefault>(0u, nx * nz, NearAlongYPass{g, bit, t});
+    exec.template forEach<LaunchDefault>(0u, nx * ny, NearAlongZPass{g, bit, t, a});
 }
 
 }  // namespace seaspring::solver

@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file test_cell_search.cpp
-/// \brief The per-cell "near" flags (cellOccupiedAt + dilateCellsAt along x, y, z, one bit per
-///        block) against a brute-force scan of each cell's search box, for every cell mode in
+/// \brief The per-cell "near" flags (nearAlongXAt per cell, nearAlongYColumn and
+///        nearAlongZColumn per column of cells, one bit per block) against a brute-force scan of each cell's search box, for every cell mode in
 ///        2D and 3D, with and without a skin: a particle may skip a block only where it holds
 ///        nothing; building one block's bit keeps the other's.
 ///        The candidate rows of forEachCandidateRow against a brute-force pair scan: every
@@ -48,10 +48,12 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
             std::vector<std::uint8_t> a(nc), t(nc), other(nc);
             for (std::uint32_t c = 0; c < nc; ++c) a[c] = other[c] = std::uint8_t(rng() % 2 ? kNearBound : 0);
             const std::uint8_t bit = kNearFluid;
-            for (std::uint32_t c = 0; c < nc; ++c) cellOccupiedAt(c, cs.data(), bit, a.data());
-            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 0, g, bit, a.data(), t.data());
-            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 1, g, bit, t.data(), a.data());
-            for (std::uint32_t c = 0; c < nc; ++c) dilateCellsAt(c, 2, g, bit, a.data(), t.data());
+            // As solver/particle_sort.h's nearFlagsOfBlock runs them (t: scratch, stale values).
+            for (std::uint32_t c = 0; c < nc; ++c) t[c] = std::uint8_t(rng());
+            for (std::uint32_t c = 0; c < nc; ++c) nearAlongXAt(c, g, cs.data(), bit, t.data());
+            if (g.ncy > 1)
+                for (std::uint32_t q = 0; q < std::uint32_t(g.ncx * g.ncz); ++q) nearAlongYColumn(q, g, bit, t.data());
+            for (std::uint32_t q = 0; q < std::uint32_t(g.ncx * g.ncy); ++q) nearAlongZColumn(q, g, bit, t.data(), a.data());
             int near = 0, far = 0, wrong = 0;
             for (int cz = 0; cz < g.ncz; ++cz)
                 for (int cy = 0; cy < g.ncy; ++cy)
@@ -63,9 +65,9 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
                                     if (x >= 0 && y >= 0 && z >= 0 && x < g.ncx && y < g.ncy && z < g.ncz)
                                         any |= occupied[g.linear(x, y, z)];
                         const std::uint32_t c = g.linear(cx, cy, cz);
-                        const std::uint8_t flag = (t[c] & bit) ? 1 : 0;
+                        const std::uint8_t flag = (a[c] & bit) ? 1 : 0;
                         wrong += flag != any ? 1 : 0;
-                        wrong += (t[c] & kNearBound) != other[c] ? 1 : 0;
+                        wrong += (a[c] & kNearBound) != other[c] ? 1 : 0;
                         (any ? near : far) += 1;
                     }
             EXPECT_EQ(wrong, 0) << dim << "D, cells of 2h/" << div;
