@@ -32,12 +32,6 @@ SEASPRING_HD_INLINE Float4 rowFrame(const Float4& psa, float rowdy, float rowdz)
     return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
 }
 
-/// The squared length of a pair offset (pairOffset's; dry is 0 in 2D).
-template <int kDim>
-SEASPRING_HD_INLINE float pairDistance2(float drx, float dry, float drz) {
-    return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
-}
-
 /// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
 /// rowFrame for that row.
 template <int kDim>
@@ -46,7 +40,7 @@ SEASPRING_HD_INLINE float pairOffset(const Float4& par, const Float4& psb, int c
     drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), par.x - psb.x);
     dry = kDim == 3 ? par.y - psb.y : 0.f;
     drz = par.z - psb.z;
-    return pairDistance2<kDim>(drx, dry, drz);
+    return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
 }
 
 /// The exact neighbour test of a pair (inside the kernel support, not the particle itself).

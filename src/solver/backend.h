@@ -60,10 +60,6 @@ struct BackendSetup {
     /// Pair lanes of the fluid loop (physics/fluid_interaction.h; resolvePairLanes): a power of
     /// two <= physics::kMaxPairLanes.
     std::uint32_t pair_lanes = 1;
-    /// The GPU's fluid pair loop through per-thread queues of found neighbours
-    /// (physics/fluid_pair_queue.h; same results): SEASPRING_PAIR_QUEUE=1 (measured in
-    /// docs/performance-large.md).
-    bool pair_queue = false;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
 };
 

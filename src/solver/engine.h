@@ -389,7 +389,6 @@ private:
         a.nbound = nbound_;
         a.np = nbound_ + nfluid_;
         a.lanes = setup_.pair_lanes;
-        a.pair_queue = setup_.pair_queue;
         while ((1u << a.lane_shift) < a.lanes) ++a.lane_shift;
         return a;
     }

@@ -33,9 +33,6 @@ struct ForceArgs {
     physics::Double3* hydro_out = nullptr;
     /// Pair lanes of the fluid loop (physics/fluid_interaction.h): a power of two, 2^lane_shift.
     std::uint32_t lanes = 1, lane_shift = 0;
-    /// The GPU's fluid pair loop: false, the direct loop; true, through a queue of found
-    /// neighbours per thread (physics/fluid_pair_queue.h; same bits). The host ignores it.
-    bool pair_queue = false;
 };
 
 template <class Exec, class Kernel, int kDim>

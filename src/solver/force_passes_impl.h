@@ -7,7 +7,6 @@
 
 #include "core/lane_group.h"
 #include "physics/fluid_interaction.h"
-#include "physics/fluid_pair_queue.h"
 #include "physics/solid_coupling.h"
 #include "solver/force_passes.h"
 #include "solver/launch.h"
@@ -38,21 +37,13 @@ struct FluidForcesPass {
 /// of one warp (the launch's indices start at 0, its blocks are whole warps and lanes divide
 /// 32), which combine their partial sums (combineAcrossLanes: the tree of
 /// physics::combineLanes); the first lane writes.
-/// kQueue: through the threads' queues of found neighbours (physics/fluid_pair_queue.h: same
-/// bits), kQueueDepth pairs each.
-constexpr int kQueueDepth = 8;
-template <class Opt, bool kQueue = false>
+template <class Opt>
 struct FluidLanesPass {
     ForceArgs a;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         const std::uint32_t lane = k & (a.lanes - 1u);
         const std::uint32_t i = a.nbound + (k >> a.lane_shift);
-        physics::FluidAccum acc;
-        if constexpr (kQueue)
-            acc = physics::fluidLanePartialQueued<Opt, kQueueDepth, LaunchFluidPairs::kGpuThreads>(i, lane, a.lanes, a.in,
-                                                                                                   a.c, a.g);
-        else
-            acc = physics::fluidLanePartial<Opt>(i, lane, a.lanes, a.in, a.c, a.g);
+        physics::FluidAccum acc = physics::fluidLanePartial<Opt>(i, lane, a.lanes, a.in, a.c, a.g);
         acc = combineAcrossLanes(acc, a.lanes, physics::CombineLanePair<Opt>{});
         if (lane != 0u) return;
         physics::finishFluidAccum<Opt>(acc);
@@ -165,21 +156,18 @@ void ForcePasses<Exec, Kernel, kDim>::pairs(const Exec& exec, const PhysicsChoic
     const std::uint32_t fe = kCompact ? a.np : (a.np - a.nbound) << a.lane_shift;
     dispatchViscoDdt<Kernel, kDim>(choice, [&](auto opt) {
         using Opt = decltype(opt);
+        using FluidPass = std::conditional_t<kCompact, FluidForcesPass<Opt>, FluidLanesPass<Opt>>;
+        const FluidPass fluid{a};
         const BoundForcesPass<BoundOpt, kCompact> bound{a};
-        auto launch = [&](const auto& fluid) {
-            if (a.nhydro == 0) {
-                exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, fb, fe, fluid);
-            } else {
-                using HydroOpt = FluidOptions<Kernel, Opt::visco, DensityDiffusion::None, kDim>;
-                const BoundThenHydroPass<BoundForcesPass<BoundOpt, kCompact>, HydroForcePass<HydroOpt>> both{
-                    bound, HydroForcePass<HydroOpt>{a, a.hydro_slot, a.hydro_out}, a.nbound};
-                exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound + a.nhydro, both,
-                                                                                     fb, fe, fluid);
-            }
-        };
-        if constexpr (kCompact) launch(FluidForcesPass<Opt>{a});
-        else if (a.pair_queue) launch(FluidLanesPass<Opt, true>{a});
-        else launch(FluidLanesPass<Opt, false>{a});
+        if (a.nhydro == 0) {
+            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound, bound, fb, fe, fluid);
+        } else {
+            using HydroOpt = FluidOptions<Kernel, Opt::visco, DensityDiffusion::None, kDim>;
+            const BoundThenHydroPass<BoundForcesPass<BoundOpt, kCompact>, HydroForcePass<HydroOpt>> both{
+                bound, HydroForcePass<HydroOpt>{a, a.hydro_slot, a.hydro_out}, a.nbound};
+            exec.template forEachIndependent<LaunchBoundPairs, LaunchFluidPairs>(0u, a.nbound + a.nhydro, both, fb,
+                                                                                 fe, fluid);
+        }
     });
 }
 

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <ostream>
 #include <sstream>
@@ -137,7 +136,6 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, in
     s.physics.dim = c.constants.dimensions;
     s.symplectic = p.step_algorithm == 2;
     s.pair_lanes = resolvePairLanes(c, pair_lanes);
-    if (const char* q = std::getenv("SEASPRING_PAIR_QUEUE"); q != nullptr && std::string(q) == "1") s.pair_queue = true;
 
     const double h = c.constants.h, dp = c.constants.dp, rho0 = c.constants.rhop0;
     FluidInputs fi;
