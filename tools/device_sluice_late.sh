@@ -5,7 +5,8 @@
 # (docs/performance-large.md, fifteenth session). One run of the new build from t = 0 to
 # T_CK with a restart file there; then, from that file, the window T_CK..T_END of each build
 # (alternated, ROUNDS rounds) with the phase timers; then the GPU time of every pass over
-# NCU_STEPS steps after the restart (Nsight Compute, when `ncu` is there).
+# NCU_STEPS steps from t = 0 and after the restart, and the force launch's instructions, active
+# lanes and occupancy in both (Nsight Compute, when `ncu` is there).
 # Env: SS_BIN (new build, default build-dev/bin), BASE_BIN (optional baseline), DP (0.002),
 #      T_CK (0.38), T_END (0.44), ROUNDS (2), NCU_STEPS (10; 0: none), BACKEND (-gpu),
 #      OUT (where sluice_late.txt goes).
@@ -59,11 +60,12 @@ for ((r = 1; r <= rounds; ++r)); do
   window new "$new"
 done
 
-if ((ncu_steps > 0)) && command -v ncu >/dev/null; then
-  say "== GPU time per pass, $ncu_steps steps after the restart (new build; Nsight Compute)"
+passes() {  # title args...: the GPU time of every pass over ncu_steps steps (Nsight Compute)
+  local title=$1; shift
+  say "== GPU time per pass, $title (new build)"
   ncu --clock-control none --print-units base --metrics gpu__time_duration.sum --csv \
-    "$new/seaspring" -overwrite "${args[@]}" -nsteps:$((ck + ncu_steps)) -restart:"$work/restart.h5" "$kase" \
-    "$work/n" 2>/dev/null | grep '^"' >"$work/ncu.csv"  # the CSV rows only (the solver's own lines share stdout)
+    "$new/seaspring" -overwrite "${args[@]}" "$@" "$kase" "$work/n" 2>/dev/null |
+    grep '^"' >"$work/ncu.csv"  # the CSV rows only (the solver's own lines share stdout)
   /usr/bin/python3 - "$work/ncu.csv" "$ncu_steps" <<'PY' | tee -a "$table"
 import collections, csv, re, sys
 t, n = collections.Counter(), collections.Counter()
@@ -83,4 +85,33 @@ for k, v in t.most_common(25):
     print(f"  {k:<40} {n[k]:6d} launches {v / 1e6 / steps:9.3f} ms per step")
 print(f"  {'all':<40} {sum(n.values()):6d} launches {sum(t.values()) / 1e6 / steps:9.3f} ms per step")
 PY
+  # The force launch (fluid and boundary particles in one grid) in detail: per launch that ran
+  # (a launch gated off by a sort takes a few microseconds and is left out).
+  ncu --clock-control none --print-units base -k regex:FluidLanes --csv --metrics \
+    gpu__time_duration.sum,smsp__thread_inst_executed.sum,smsp__inst_executed.sum,sm__warps_active.avg.pct_of_peak_sustained_active,launch__registers_per_thread \
+    "$new/seaspring" -overwrite "${args[@]}" "$@" "$kase" "$work/n" 2>/dev/null | grep '^"' >"$work/ncu_f.csv"
+  /usr/bin/python3 - "$work/ncu_f.csv" "$nfluid" <<'PY' | tee -a "$table"
+import collections, csv, sys
+by = collections.defaultdict(dict)
+for r in csv.DictReader(open(sys.argv[1])):
+    try:
+        by[r["ID"]][r["Metric Name"]] = float(r["Metric Value"].replace(",", ""))
+    except (KeyError, ValueError):
+        pass
+runs = [m for m in by.values() if m.get("gpu__time_duration.sum", 0) > 50e3]
+if not runs:
+    print("  force launch: no metrics"); sys.exit()
+avg = lambda k: sum(m.get(k, 0) for m in runs) / len(runs)
+nf = float(sys.argv[2])
+print(f"  force launch ({len(runs)} that ran): {avg('gpu__time_duration.sum') / 1e3:.1f} us; "
+      f"{avg('smsp__thread_inst_executed.sum') / nf:.0f} thread instructions per fluid particle; "
+      f"{avg('smsp__thread_inst_executed.sum') / max(avg('smsp__inst_executed.sum'), 1):.1f} of 32 lanes active; "
+      f"occupancy {avg('sm__warps_active.avg.pct_of_peak_sustained_active'):.1f}%; "
+      f"{avg('launch__registers_per_thread'):.0f} registers")
+PY
+}
+if ((ncu_steps > 0)) && command -v ncu >/dev/null; then
+  nfluid=$(grep -o "fluid [0-9]*" "$work/ck.log" | head -n 1 | grep -o "[0-9]*$")
+  passes "the first $ncu_steps steps from t = 0" -nsteps:"$ncu_steps"
+  passes "$ncu_steps steps after the restart at $tck s" -nsteps:$((ck + ncu_steps)) -restart:"$work/restart.h5"
 fi

@@ -28,7 +28,7 @@ struct InteractionInputs {
     const SymTensor* tau = nullptr;                   ///< SPS stress/rho, per particle (SPS only)
     const Float2* press_ovrho = nullptr;              ///< (Tait pressure, 1/rho) per particle
     /// Per cell: kNearBound / kNearFluid, a boundary / fluid particle in its search box
-    /// (nearAlongXAt, nearAlongYColumn, nearAlongZColumn); null: visit always.
+    /// (nearAlongXAt, nearAlongYSegment, nearAlongZSegment); null: visit always.
     const std::uint8_t* near = nullptr;
     /// mDBC SlipMode 2/3 (null otherwise): per boundary particle, the velocity its viscous
     /// terms use (the tangential ghost velocity, mdbc.h); its velrho keeps the wall's.

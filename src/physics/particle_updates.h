@@ -60,64 +60,68 @@ SEASPRING_HD inline void cellStartOuterAt(std::uint32_t c, std::uint32_t b, std:
 /// block, where its cell's bit is clear: the block holds no candidate there, so the flags
 /// change no result. Built whenever the block is sorted (the boundary block once unless
 /// boundaries move; the fluid block at every sort, which the skin makes rare), leaving the
-/// other block's bit as it is, in three passes through a scratch byte per cell `t`, each pass
-/// extending the box along one axis: nearAlongXAt per cell (the block's cell ranges are
-/// monotone, so a run of cells holds a particle iff the range from its first cell's start to
-/// its last cell's end is not empty: two loads, no loop), then nearAlongYColumn per column of
-/// cells along y (in place in `t`), then nearAlongZColumn per column along z (from `t` into
-/// near). A column is swept once with a window of 2 range + 1 cells kept as bits of a shift
-/// register. Integer only, so any execution order gives the same flags.
+/// other block's bit as it is, in three passes, each extending the box along one axis:
+/// nearAlongXAt per cell into near's bit (the block's cell ranges are monotone, so a run of
+/// cells holds a particle iff the range from its first cell's start to its last cell's end is
+/// not empty: two loads, no loop), then nearAlongYSegment from near's bit into the scratch `t`
+/// and nearAlongZSegment from `t` back into near's bit, each per segment of kNearSegment cells
+/// of a column along its axis (the window of 2 range + 1 cells kept as bits of a shift
+/// register: one load per cell, plus 2 range per segment). Integer only, so any execution
+/// order gives the same flags.
 constexpr std::uint8_t kNearBound = 1u, kNearFluid = 2u;
+constexpr std::uint32_t kNearSegment = 32;
 
-/// t[c] = `bit` if the block (cell ranges `cell_start`) has a particle within g.range cells of
-/// c along x (in c's row), else 0.
+/// Bit `bit` of near[c] = the block (cell ranges `cell_start`) has a particle within g.range
+/// cells of c along x (in c's row); the other bits are kept.
 SEASPRING_HD inline void nearAlongXAt(std::uint32_t c, const CellGrid& g, const std::uint32_t* cell_start,
-                                      std::uint8_t bit, std::uint8_t* t) {
+                                      std::uint8_t bit, std::uint8_t* near) {
     const std::uint32_t nx = std::uint32_t(g.ncx), r = std::uint32_t(g.range);
     const std::uint32_t x = c % nx;
     const std::uint32_t lo = c - (x < r ? x : r), hi = c + (nx - 1u - x < r ? nx - 1u - x : r);
-    t[c] = cell_start[hi + 1u] != cell_start[lo] ? bit : std::uint8_t(0);
+    near[c] = std::uint8_t((near[c] & std::uint8_t(~bit)) | (cell_start[hi + 1u] != cell_start[lo] ? bit : 0u));
 }
 
-/// The window of 2 range + 1 cells of a column sweep: bit k of `hist` holds whether the cell k
-/// places behind the newest one pushed was set.
-SEASPRING_HD inline std::uint32_t nearWindowMask(const CellGrid& g) { return (2u << (2 * g.range)) - 1u; }
+/// Segments of a sweep along an axis of n cells: ceil(n / kNearSegment).
+SEASPRING_HD inline std::uint32_t nearSegments(int n) { return (std::uint32_t(n) + kNearSegment - 1u) / kNearSegment; }
 
-/// Column q = x + ncx z of cells along y: t[x, y, z] = `bit` where t was non-zero within g.range
-/// cells along y, else 0 (in place: each cell's value is pushed into the window before it is
-/// overwritten).
-SEASPRING_HD inline void nearAlongYColumn(std::uint32_t q, const CellGrid& g, std::uint8_t bit, std::uint8_t* t) {
-    const std::uint32_t nx = std::uint32_t(g.ncx);
-    const int ny = g.ncy, r = g.range;
-    std::uint8_t* col = t + (q % nx) + std::size_t(q / nx) * nx * std::uint32_t(ny);
-    const std::uint32_t mask = nearWindowMask(g);
-    std::uint32_t hist = 0;
-    for (int y = 0; y < r && y < ny; ++y) hist = (hist << 1) | (col[std::size_t(y) * nx] != 0 ? 1u : 0u);
-    for (int y = 0; y < ny; ++y) {
-        const int ahead = y + r;
-        hist = (hist << 1) | (ahead < ny && col[std::size_t(ahead) * nx] != 0 ? 1u : 0u);
-        col[std::size_t(y) * nx] = (hist & mask) != 0u ? bit : std::uint8_t(0);
+/// The window sweep shared by both axes: cells [k0, k1) of a column of n cells, `stride` apart
+/// from `in` and `out` (at the column's first cell); out = `bit` where bit `in_bit` of in is set
+/// within `range` cells along the column, else 0 (only that bit is written; `keep` = out's bits
+/// kept).
+SEASPRING_HD inline void nearWindowSweep(const std::uint8_t* in, std::uint8_t in_bit, std::uint8_t* out,
+                                         std::uint8_t bit, std::uint8_t keep, std::size_t stride, int n, int k0,
+                                         int k1, int range) {
+    const std::uint32_t mask = (2u << (2 * range)) - 1u;  // 2 range + 1 cells
+    std::uint32_t hist = 0;  // bit m: whether the cell m places behind the newest pushed is set
+    for (int k = k0 - range; k < k0 + range; ++k)
+        hist = (hist << 1) | (k >= 0 && k < n && (in[std::size_t(k) * stride] & in_bit) != 0 ? 1u : 0u);
+    for (int k = k0; k < k1; ++k) {
+        const int ahead = k + range;
+        hist = (hist << 1) | (ahead < n && (in[std::size_t(ahead) * stride] & in_bit) != 0 ? 1u : 0u);
+        std::uint8_t& o = out[std::size_t(k) * stride];
+        o = std::uint8_t((o & keep) | ((hist & mask) != 0u ? bit : 0u));
     }
 }
 
-/// Column q = x + ncx y of cells along z: bit `bit` of near[x, y, z] = whether t is non-zero
-/// within g.range cells along z; near's other bits are kept.
-SEASPRING_HD inline void nearAlongZColumn(std::uint32_t q, const CellGrid& g, std::uint8_t bit, const std::uint8_t* t,
-                                          std::uint8_t* near) {
-    const std::size_t nxy = std::size_t(g.ncx) * std::uint32_t(g.ncy);
-    const int nz = g.ncz, r = g.range;
-    const std::uint8_t* tc = t + q;
-    std::uint8_t* nc = near + q;
-    const std::uint32_t mask = nearWindowMask(g);
-    const std::uint8_t keep = std::uint8_t(~bit);
-    std::uint32_t hist = 0;
-    for (int z = 0; z < r && z < nz; ++z) hist = (hist << 1) | (tc[std::size_t(z) * nxy] != 0 ? 1u : 0u);
-    for (int z = 0; z < nz; ++z) {
-        const int ahead = z + r;
-        hist = (hist << 1) | (ahead < nz && tc[std::size_t(ahead) * nxy] != 0 ? 1u : 0u);
-        std::uint8_t& f = nc[std::size_t(z) * nxy];
-        f = std::uint8_t((f & keep) | ((hist & mask) != 0u ? bit : 0u));
-    }
+/// Segment q of the columns along y (q = x + ncx (z + ncz s), s the segment): t = `bit` where
+/// near's bit is set within g.range cells along y, else 0.
+SEASPRING_HD inline void nearAlongYSegment(std::uint32_t q, const CellGrid& g, std::uint8_t bit,
+                                           const std::uint8_t* near, std::uint8_t* t) {
+    const std::uint32_t nx = std::uint32_t(g.ncx), cols = nx * std::uint32_t(g.ncz);
+    const std::uint32_t col = q % cols, seg = q / cols;
+    const std::size_t first = (col % nx) + std::size_t(col / nx) * nx * std::uint32_t(g.ncy);
+    const int k0 = int(seg * kNearSegment), k1 = k0 + int(kNearSegment) < g.ncy ? k0 + int(kNearSegment) : g.ncy;
+    nearWindowSweep(near + first, bit, t + first, bit, 0u, nx, g.ncy, k0, k1, g.range);
+}
+
+/// Segment q of the columns along z (q = x + ncx (y + ncy s)): bit `bit` of near = whether t is
+/// set within g.range cells along z; near's other bits are kept.
+SEASPRING_HD inline void nearAlongZSegment(std::uint32_t q, const CellGrid& g, std::uint8_t bit,
+                                           const std::uint8_t* t, std::uint8_t* near) {
+    const std::uint32_t cols = std::uint32_t(g.ncx) * std::uint32_t(g.ncy);
+    const std::uint32_t col = q % cols, seg = q / cols;
+    const int k0 = int(seg * kNearSegment), k1 = k0 + int(kNearSegment) < g.ncz ? k0 + int(kNearSegment) : g.ncz;
+    nearWindowSweep(t + col, bit, near + col, bit, std::uint8_t(~bit), cols, g.ncz, k0, k1, g.range);
 }
 
 /// PosCell of particle i.

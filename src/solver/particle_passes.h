@@ -86,25 +86,26 @@ struct NearAlongXPass {
     physics::CellGrid g;
     const std::uint32_t* cell_start;
     std::uint8_t bit;
-    std::uint8_t* t;
-    SEASPRING_HD void operator()(std::uint32_t c) const { physics::nearAlongXAt(c, g, cell_start, bit, t); }
+    std::uint8_t* near;
+    SEASPRING_HD void operator()(std::uint32_t c) const { physics::nearAlongXAt(c, g, cell_start, bit, near); }
 };
 
-/// One thread per column of cells along y (index x + ncx z).
+/// One thread per segment of a column of cells along y.
 struct NearAlongYPass {
     physics::CellGrid g;
     std::uint8_t bit;
+    const std::uint8_t* near;
     std::uint8_t* t;
-    SEASPRING_HD void operator()(std::uint32_t q) const { physics::nearAlongYColumn(q, g, bit, t); }
+    SEASPRING_HD void operator()(std::uint32_t q) const { physics::nearAlongYSegment(q, g, bit, near, t); }
 };
 
-/// One thread per column of cells along z (index x + ncx y).
+/// One thread per segment of a column of cells along z.
 struct NearAlongZPass {
     physics::CellGrid g;
     std::uint8_t bit;
     const std::uint8_t* t;
     std::uint8_t* near;
-    SEASPRING_HD void operator()(std::uint32_t q) const { physics::nearAlongZColumn(q, g, bit, t, near); }
+    SEASPRING_HD void operator()(std::uint32_t q) const { physics::nearAlongZSegment(q, g, bit, t, near); }
 };
 
 struct PosCellPass {

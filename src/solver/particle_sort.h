@@ -97,16 +97,16 @@ std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, s
 }
 
 /// Bit `bit` of the per-cell near flags `near` from the cell ranges `cs` of its block, through
-/// the scratch `tmp` (physics::nearAlongXAt per cell, nearAlongYColumn and nearAlongZColumn per
-/// column; the other bit is kept).
+/// the scratch `tmp` (physics::nearAlongXAt per cell, nearAlongYSegment and nearAlongZSegment
+/// per segment of a column; the other bit is kept).
 template <class Exec, class CellStarts, class Flags>
 void nearFlagsOfBlock(Exec& exec, const physics::CellGrid& g, const CellStarts& cs, std::uint8_t bit, Flags& near,
                       Flags& tmp) {
     const std::uint32_t nx = std::uint32_t(g.ncx), ny = std::uint32_t(g.ncy), nz = std::uint32_t(g.ncz);
     std::uint8_t *a = near.data(), *t = tmp.data();
-    exec.template forEach<LaunchDefault>(0u, g.cellCount(), NearAlongXPass{g, cs.data(), bit, t});
-    if (ny > 1u) exec.template forEach<LaunchDefault>(0u, nx * nz, NearAlongYPass{g, bit, t});
-    exec.template forEach<LaunchDefault>(0u, nx * ny, NearAlongZPass{g, bit, t, a});
+    exec.template forEach<LaunchDefault>(0u, g.cellCount(), NearAlongXPass{g, cs.data(), bit, a});
+    exec.template forEach<LaunchDefault>(0u, nx * nz * physics::nearSegments(g.ncy), NearAlongYPass{g, bit, a, t});
+    exec.template forEach<LaunchDefault>(0u, nx * ny * physics::nearSegments(g.ncz), NearAlongZPass{g, bit, t, a});
 }
 
 }  // namespace seaspring::solver

@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file test_cell_search.cpp
-/// \brief The per-cell "near" flags (nearAlongXAt per cell, nearAlongYColumn and
-///        nearAlongZColumn per column of cells, one bit per block) against a brute-force scan of each cell's search box, for every cell mode in
+/// \brief The per-cell "near" flags (nearAlongXAt per cell, nearAlongYSegment and
+///        nearAlongZSegment per segment of a column of cells, one bit per block) against a brute-force scan of each cell's search box, for every cell mode in
 ///        2D and 3D, with and without a skin: a particle may skip a block only where it holds
 ///        nothing; building one block's bit keeps the other's.
 ///        The candidate rows of forEachCandidateRow against a brute-force pair scan: every
@@ -27,7 +27,7 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
         for (int div : {1, 2, 3, 4})
           for (double skin : {0.0, 0.05}) {
             CellGrid g;
-            ASSERT_TRUE(makeCellGrid(0, 0, 0, 1.0, dim == 3 ? 0.6 : 0.0, 0.5, 0.05, div, g, skin));
+            ASSERT_TRUE(makeCellGrid(0, 0, 0, 1.0, dim == 3 ? 0.9 : 0.0, 0.9, 0.05, div, g, skin));
             const std::uint32_t nc = g.cellCount();
             // Sparse occupancy (about one occupied cell per search box; occupied cells hold 1-3
             // particles), as a block's cell ranges: near and far cells both occur.
@@ -50,10 +50,11 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
             const std::uint8_t bit = kNearFluid;
             // As solver/particle_sort.h's nearFlagsOfBlock runs them (t: scratch, stale values).
             for (std::uint32_t c = 0; c < nc; ++c) t[c] = std::uint8_t(rng());
-            for (std::uint32_t c = 0; c < nc; ++c) nearAlongXAt(c, g, cs.data(), bit, t.data());
-            if (g.ncy > 1)
-                for (std::uint32_t q = 0; q < std::uint32_t(g.ncx * g.ncz); ++q) nearAlongYColumn(q, g, bit, t.data());
-            for (std::uint32_t q = 0; q < std::uint32_t(g.ncx * g.ncy); ++q) nearAlongZColumn(q, g, bit, t.data(), a.data());
+            for (std::uint32_t c = 0; c < nc; ++c) nearAlongXAt(c, g, cs.data(), bit, a.data());
+            for (std::uint32_t q = 0; q < std::uint32_t(g.ncx * g.ncz) * nearSegments(g.ncy); ++q)
+                nearAlongYSegment(q, g, bit, a.data(), t.data());
+            for (std::uint32_t q = 0; q < std::uint32_t(g.ncx * g.ncy) * nearSegments(g.ncz); ++q)
+                nearAlongZSegment(q, g, bit, t.data(), a.data());
             int near = 0, far = 0, wrong = 0;
             for (int cz = 0; cz < g.ncz; ++cz)
                 for (int cy = 0; cy < g.ncy; ++cy)
@@ -73,6 +74,10 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
             EXPECT_EQ(wrong, 0) << dim << "D, cells of 2h/" << div;
             EXPECT_GT(near, 0) << dim << "D, cells of 2h/" << div;  // both kinds occur: the check can fail
             EXPECT_GT(far, 0) << dim << "D, cells of 2h/" << div;
+            if (div == 4) {  // columns of more than one segment: the sweeps' seams are checked
+                EXPECT_GT(nearSegments(g.ncz), 1u);
+                if (dim == 3) EXPECT_GT(nearSegments(g.ncy), 1u);
+            }
           }
     }
 }
