@@ -87,7 +87,7 @@ print(f"  {'all':<40} {sum(n.values()):6d} launches {sum(t.values()) / 1e6 / ste
 PY
   # The force launch (fluid and boundary particles in one grid) in detail: per launch that ran
   # (a launch gated off by a sort takes a few microseconds and is left out).
-  ncu --clock-control none --print-units base -k regex:FluidLanes --csv --metrics \
+  ncu --clock-control none --print-units base --kernel-name-base demangled -k regex:FluidLanes --csv --metrics \
     gpu__time_duration.sum,smsp__thread_inst_executed.sum,smsp__inst_executed.sum,sm__warps_active.avg.pct_of_peak_sustained_active,launch__registers_per_thread \
     "$new/seaspring" -overwrite "${args[@]}" "$@" "$kase" "$work/n" 2>/dev/null | grep '^"' >"$work/ncu_f.csv"
   /usr/bin/python3 - "$work/ncu_f.csv" "$nfluid" <<'PY' | tee -a "$table"
