@@ -3,6 +3,8 @@
 /// \brief SEASPRING_HD marks functions compiled for host and device alike.
 #pragma once
 
+#include <cstdint>
+
 #if defined(__CUDACC__)
 #define SEASPRING_HD __host__ __device__
 #else
@@ -37,3 +39,12 @@
 #else
 #define SEASPRING_MATERIALIZE(x) ((void)0)
 #endif
+
+/// The index of the lowest set bit of x != 0 (bit scans of the pair loops' hit masks).
+SEASPRING_HD_INLINE int lowestSetBit(std::uint32_t x) {
+#if defined(__CUDA_ARCH__)
+    return __ffs(int(x)) - 1;
+#else
+    return __builtin_ctz(x);
+#endif
+}

@@ -47,6 +47,36 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std
     }
 }
 
+/// fluidPairsInRow's GPU alternative (-pairloop:mask): the row's candidates of this lane are
+/// tested first, up to 32 at a time, into a bit mask of neighbours; then the pairs are taken from
+/// the mask in ascending order, their offsets computed again (pairOffset: the same bits). The
+/// same pairs in the same order as the direct loop, so the same sums; but the threads of a warp
+/// run the pair arithmetic together for their k-th neighbour of the row rather than for
+/// candidate k, which in a disordered flow (where the threads' neighbours lie at unrelated
+/// candidate steps) keeps more of them busy (docs/performance-large.md, sixteenth session).
+template <class Opt, bool kBound>
+SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen,
+                                               std::uint32_t lane, std::uint32_t lanes, const Float4& par, int cax,
+                                               const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+                                               const InteractionInputs& in, const FluidConstants& c,
+                                               const CellGrid& g, FluidAccum& acc) {
+    for (std::uint32_t base = pb + ((lane - seen) & (lanes - 1u)); base < pe; base += 32u * lanes) {
+        std::uint32_t hits = 0;
+        for (std::uint32_t k = 0, j = base; k < 32u && j < pe; ++k, j += lanes) {
+            float drx, dry, drz;
+            const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
+            hits |= (isNeighbour(rr2, c) ? 1u : 0u) << k;
+        }
+        while (hits != 0u) {
+            const std::uint32_t j = base + std::uint32_t(lowestSetBit(hits)) * lanes;
+            hits &= hits - 1u;
+            float drx, dry, drz;
+            const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
+            fluidPair<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
+        }
+    }
+}
+
 /// The host's path (kCompact): the candidates of one block, gathered row by row, are processed
 /// in batches. Offsets are computed in SIMD lanes, neighbours selected without branches, their
 /// terms computed in SIMD lanes, and the terms summed one by one in candidate order: the same
@@ -159,7 +189,7 @@ struct PairBatch {
 /// The pairs of `psa` with the candidates of one block (`cell_start` of that block), row by row
 /// (forEachCandidateRow), candidates numbered from 0 in the block: kCompact (the host), every
 /// lane's partial at once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0].
-template <class Opt, bool kBound, bool kCompact>
+template <class Opt, bool kBound, bool kCompact, bool kMask = false>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
@@ -171,6 +201,9 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
     auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (kCompact)
             batch.addRow(pb, pe, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+        else if constexpr (kMask)
+            fluidPairsInRowMasked<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g,
+                                               *acc);
         else
             fluidPairsInRow<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
         seen += pe - pb;
@@ -185,7 +218,7 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
 /// The partial sums of fluid particle `i` (fluid neighbours, then boundary neighbours): kCompact,
 /// all `lanes` partials into acc[0, lanes) in one walk (the host's path); otherwise lane `lane`'s
 /// alone into acc[0] (the GPU's path: one thread per lane). acc[] starts as FluidAccum{}.
-template <class Opt, bool kCompact>
+template <class Opt, bool kCompact, bool kMask = false>
 SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, std::uint32_t lanes,
                                            const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
                                            FluidAccum* acc) {
@@ -204,20 +237,21 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     } else {
         (void)rows;
     }
-    fluidPairsInBlock<Opt, false, kCompact>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane, lanes,
-                                            acc, rt);
+    fluidPairsInBlock<Opt, false, kCompact, kMask>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                                   lanes, acc, rt);
     if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
-        fluidPairsInBlock<Opt, true, kCompact>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                               lanes, acc, rt);
+        fluidPairsInBlock<Opt, true, kCompact, kMask>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g,
+                                                      lane, lanes, acc, rt);
 }
 
-/// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane).
-template <class Opt>
+/// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane;
+/// kMask: fluidPairsInRowMasked, the same bits).
+template <class Opt, bool kMask = false>
 SEASPRING_HD inline FluidAccum fluidLanePartial(std::uint32_t i, std::uint32_t lane, std::uint32_t lanes,
                                                 const InteractionInputs& in, const FluidConstants& c,
                                                 const CellGrid& g) {
     FluidAccum acc;
-    fluidLanePartials<Opt, false>(i, lane, lanes, in, c, g, &acc);
+    fluidLanePartials<Opt, false, kMask>(i, lane, lanes, in, c, g, &acc);
     return acc;
 }
 

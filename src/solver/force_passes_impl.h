@@ -32,18 +32,28 @@ struct FluidForcesPass {
     }
 };
 
+/// The GPU's fluid loop takes each row's neighbours from a bit mask (physics::
+/// fluidPairsInRowMasked) for the laminar families: their pair arithmetic (about 140
+/// instructions with SPS) is large enough for the extra offset per pair to pay where the
+/// threads of a warp find their neighbours at different candidate steps; with artificial
+/// viscosity the direct loop stays (docs/performance-large.md, sixteenth session).
+template <class Opt>
+constexpr bool kMaskedRows = Opt::visco != physics::Viscosity::Artificial;
+
 /// One pair lane of a fluid particle (the GPU's path): index k of [0, nfluid * lanes) is lane
 /// k mod lanes of fluid particle nbound + k / lanes. A particle's lanes are consecutive threads
 /// of one warp (the launch's indices start at 0, its blocks are whole warps and lanes divide
 /// 32), which combine their partial sums (combineAcrossLanes: the tree of
-/// physics::combineLanes); the first lane writes.
-template <class Opt>
+/// physics::combineLanes); the first lane writes. kMask: each row's neighbours found into a
+/// bit mask first (physics::fluidPairsInRowMasked; the same bits), by default for the laminar
+/// families (kMaskedRows).
+template <class Opt, bool kMask = kMaskedRows<Opt>>
 struct FluidLanesPass {
     ForceArgs a;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         const std::uint32_t lane = k & (a.lanes - 1u);
         const std::uint32_t i = a.nbound + (k >> a.lane_shift);
-        physics::FluidAccum acc = physics::fluidLanePartial<Opt>(i, lane, a.lanes, a.in, a.c, a.g);
+        physics::FluidAccum acc = physics::fluidLanePartial<Opt, kMask>(i, lane, a.lanes, a.in, a.c, a.g);
         acc = combineAcrossLanes(acc, a.lanes, physics::CombineLanePair<Opt>{});
         if (lane != 0u) return;
         physics::finishFluidAccum<Opt>(acc);

@@ -76,7 +76,9 @@ TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
             EXPECT_GT(far, 0) << dim << "D, cells of 2h/" << div;
             if (div == 4) {  // columns of more than one segment: the sweeps' seams are checked
                 EXPECT_GT(nearSegments(g.ncz), 1u);
-                if (dim == 3) EXPECT_GT(nearSegments(g.ncy), 1u);
+                if (dim == 3) {
+                    EXPECT_GT(nearSegments(g.ncy), 1u);
+                }
             }
           }
     }

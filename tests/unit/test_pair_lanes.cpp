@@ -7,6 +7,8 @@
 ///          combineLanes, for 1, 2, 4 and 8 lanes;
 ///        - a warp's butterfly exchange (lane k takes lane k ^ w's value, the lower lane's first;
 ///          core/lane_group.h on the GPU, emulated here) leaves lane 0 with combineLanes' result;
+///        - the GPU's masked rows (fluidPairsInRowMasked) give the direct walk's bits, lane by
+///          lane, also on rows longer than one 32-bit mask;
 ///        - one lane is the plain sum, and more lanes change only the rounding: every candidate
 ///          lands in exactly one lane (the sums agree to float rounding, and a lane left out or
 ///          counted twice is far outside it).
@@ -50,7 +52,7 @@ struct Scene {
     }
 };
 
-Scene makeScene(int dim, int cell_div, std::mt19937& rng) {
+Scene makeScene(int dim, int cell_div, std::mt19937& rng, std::uint32_t density = 1) {
     Scene s;
     const double dp = 0.01, h = 1.5 * dp, rho0 = 1000;
     const double lx = 0.3, ly = dim == 3 ? 0.12 : 0.0, lz = 0.2;
@@ -69,8 +71,8 @@ Scene makeScene(int dim, int cell_div, std::mt19937& rng) {
     fi.ddt_value = 0.1;
     fi.gravity_z = -9.81;
     s.c = makeFluidConstants(fi);
-    s.nf = dim == 3 ? 2500 : 700;
-    s.nb = dim == 3 ? 900 : 120;
+    s.nf = (dim == 3 ? 2500 : 700) * density;
+    s.nb = (dim == 3 ? 900 : 120) * density;
     std::uniform_real_distribution<double> ux(0, lx), uy(0, ly), uz(0, lz), ub(-0.02, 0.0), uv(-0.5, 0.5),
         urho(990, 1015), ut(-1e-4, 1e-4);
     auto block = [&](std::uint32_t n, bool bound, std::uint32_t first, std::vector<std::uint32_t>& cs) {
@@ -141,10 +143,23 @@ FluidAccum butterflyLaneZero(std::vector<FluidAccum> v) {
     return v[0];
 }
 
+/// The most candidates of one row that a fluid particle of the scene visits (either block).
+template <int kDim>
+std::uint32_t longestRow(const Scene& s) {
+    std::uint32_t most = 0;
+    for (std::uint32_t i = s.nb; i < s.nb + s.nf; ++i)
+        for (const std::uint32_t* cs : {s.cs_fluid.data(), s.cs_bound.data()})
+            forEachCandidateRow<kDim>(s.poscell[i], cs, s.c, s.g,
+                                      [&](std::uint32_t pb, std::uint32_t pe, const Float4&, int) {
+                                          most = std::max(most, pe - pb);
+                                      });
+    return most;
+}
+
 template <class Opt>
-void checkLanes(int cell_div, std::uint32_t seed) {
+void checkLanes(int cell_div, std::uint32_t seed, std::uint32_t density = 1) {
     std::mt19937 rng(seed);
-    Scene s = makeScene(Opt::dim, cell_div, rng);
+    Scene s = makeScene(Opt::dim, cell_div, rng, density);
     if (Opt::visco != Viscosity::Artificial) {
         s.c.visco = 1e-3f;  // a laminar nu that matters against the pressure terms
         s.c.visco_bound = 7e-4f;
@@ -156,6 +171,13 @@ void checkLanes(int cell_div, std::uint32_t seed) {
     for (std::uint32_t i = s.nb; i < s.nb + s.nf; ++i) {
         const FluidAccum one = fluidParticleForces<Opt, true>(i, in, s.c, s.g, 1);
         ASSERT_TRUE(sameAccum<Opt>(one, fluidParticleForces<Opt, false>(i, in, s.c, s.g, 1))) << "particle " << i;
+        // The GPU's masked rows (fluidPairsInRowMasked, the laminar families' path): the direct
+        // walk's bits, lane by lane.
+        for (std::uint32_t lanes : {1u, 2u, 4u, 8u})
+            for (std::uint32_t l = 0; l < lanes; ++l)
+                ASSERT_TRUE(sameAccum<Opt>(fluidLanePartial<Opt, true>(i, l, lanes, in, s.c, s.g),
+                                           fluidLanePartial<Opt, false>(i, l, lanes, in, s.c, s.g)))
+                    << "masked rows against the direct walk, lane " << l << " of " << lanes << ", particle " << i;
         wall_pairs += one.ddt_off ? 1 : 0;
         const double mag = std::abs(one.ax) + std::abs(one.ay) + std::abs(one.az);
         scale_sum += mag;
@@ -193,6 +215,15 @@ TEST(PairLanes, ArtificialDdt3In2DAnd3D) {
 TEST(PairLanes, CubicLaminarMolteniAndWendlandSps) {
     checkLanes<FluidOptions<CubicKernel, Viscosity::Laminar, DensityDiffusion::Molteni, 2>>(1, 13);
     checkLanes<FluidOptions<WendlandKernel, Viscosity::LaminarSps, DensityDiffusion::Fourtakas, 3>>(2, 14);
+}
+
+TEST(PairLanes, MaskedRowsKeepTheDirectWalksBitsOnRowsLongerThanAMask) {
+    // Cells of 2h and four times the particles: rows of more than 32 candidates, which the masked
+    // walk takes 32 at a time.
+    using Opt = FluidOptions<WendlandKernel, Viscosity::LaminarSps, DensityDiffusion::Fourtakas, 2>;
+    std::mt19937 rng(15);
+    EXPECT_GT(longestRow<2>(makeScene(2, 1, rng, 4)), 64u);
+    checkLanes<Opt>(1, 15, 4);
 }
 
 TEST(PairLanes, CombineLanesIsThePairwiseTree) {
