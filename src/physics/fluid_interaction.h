@@ -47,7 +47,8 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std
     }
 }
 
-/// fluidPairsInRow's GPU alternative (-pairloop:mask): the row's candidates of this lane are
+/// fluidPairsInRow's alternative on the GPU for the laminar families (solver/force_passes_impl.h,
+/// kMaskedRows): the row's candidates of this lane are
 /// tested first, up to 32 at a time, into a bit mask of neighbours; then the pairs are taken from
 /// the mask in ascending order, their offsets computed again (pairOffset: the same bits). The
 /// same pairs in the same order as the direct loop, so the same sums; but the threads of a warp
