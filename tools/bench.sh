@@ -12,6 +12,14 @@
 #            0.02 s, symplectic + Wendland + DDT 3 + the case's artificial viscosity, DBC.
 #   fluid    the same at 4.36 M (dp 0.006 -> 4,360,716 particles) and 13.29 M (dp 0.004 ->
 #            13,292,664): ns per particle per step.
+#   violent  (optional) SPHERIC Test 2 at 1.12 M in a disordered flow: the new build runs to
+#            VIOLENT_T0 (default 0.6 s, after the front has hit the obstacle) and writes a
+#            restart file there; then each build runs VIOLENT_STEPS (default 300) steps from it:
+#            ns per particle per step. The lattice-start figures above show the pair loop at its
+#            best; this one shows it where a dam break spends most of its time (at 1.12 M on an
+#            H100 about 1.4x the lattice's; docs/performance-large.md, sixteenth session). A
+#            baseline must read the new build's restart file (and BASE_ARGS must not change the
+#            physics line, which -restart checks).
 #   memory   GPU memory per particle: nvidia-smi memory.used sampled in the background (one query
 #            about every 100 ms) during the 4.36 M and 13.29 M runs; the table shows the peak of
 #            each run and the marginal bytes per particle (peak13 - peak4) / (n13 - n4), which
@@ -78,7 +86,8 @@
 #      MEM_NSTEPS   steps of the memory-only runs (default 40); GPU_INDEX nvidia-smi's GPU (default 0)
 #      SLUICE_T0, SLUICE_STEPS, SLUICE_PROGRESS (default 0.005 s, 600, 1 s), SLUICE_TEND (2)
 #      Testing sizes: SPHERIC_DP_1M/_A/_B (0.01, 0.006, 0.004), FLUID_TMAX (0.02), SMALL_TMAX
-#      (0.05), FSI3D_TMAX (0.02), FSI3D_DP (the case's), CPU_TMAX (0.02), SLUICE_DP (0.001).
+#      (0.05), FSI3D_TMAX (0.02), FSI3D_DP (the case's), CPU_TMAX (0.02), SLUICE_DP (0.001),
+#      VIOLENT_T0 (0.6), VIOLENT_STEPS (300).
 #
 # Exit status: 0 when every run succeeded, 1 when any failed or was skipped (the table is printed
 # either way; a failed run prints its log's tail and shows FAILED in the table), 2 bad usage.
@@ -98,7 +107,7 @@ table_py="$root/tools/bench_table.py"
 read -r -a backend <<<"${BENCH_BACKEND:--gpu}"
 read -r -a extra <<<"${BENCH_ARGS:-}"
 [[ -n "${BENCH_NSTEPS:-}" ]] && extra+=("-nsteps:$BENCH_NSTEPS")
-all_parts=(fluid1m fluid memory sps small fsi3d cpu sluice)
+all_parts=(fluid1m fluid violent memory sps small fsi3d cpu sluice)
 default_parts=(fluid sps memory small fsi3d)
 
 usage() { sed -n '2,/^set -uo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; }
@@ -107,7 +116,7 @@ for a in "$@"; do
   case "$a" in
     -h|--help) usage; exit 0 ;;
     default) want+=("${default_parts[@]}") ;;
-    fluid1m|fluid|memory|sps|small|fsi3d|cpu|sluice) want+=("$a") ;;
+    fluid1m|fluid|violent|memory|sps|small|fsi3d|cpu|sluice) want+=("$a") ;;
     *) echo "bench.sh: unknown part '$a' (parts: ${all_parts[*]}; default: ${default_parts[*]})" >&2; exit 2 ;;
   esac
 done
@@ -263,6 +272,22 @@ timed() {  # bench kind case membench solver-args...
   done
 }
 
+# The violent part's restart file: the new build from t = 0 to T0 with a checkpoint there.
+# Sets violent_step (the step of the restart file) and returns 0 when the file was written.
+violent_restart() {  # case t0 solver-args...
+  local case=$1 t0=$2; shift 2
+  local out="$work/runs/violent_restart" left
+  left=$(remaining)
+  ((left < 10)) && { echo "[$(stamp)] violent: no time left for the restart file"; return 1; }
+  rm -rf "$out"
+  echo "[$(stamp)] violent: restart file at t = $t0 s (new build)"
+  timeout -k 5 "$left" "$new_bin/seaspring" "$@" "${extra[@]}" -tmax:"$t0" -checkpoint:"$t0" -sv:none -progress:0 \
+    "$work/cases/$case" "$out" >"$out.log" 2>&1 || { tail -n 5 "$out.log" | sed 's/^/  | /'; return 1; }
+  violent_step=$(grep -o "checkpoint t=[0-9.e+-]* s, step [0-9]*" "$out.log" | tail -n 1 | grep -o "[0-9]*$")
+  [[ -n "$violent_step" && -f "$out/restart.h5" ]] || { echo "  no restart file written"; return 1; }
+  echo "  restart file at step $violent_step"
+}
+
 # The sluice run, stopped after its window (see the header).
 sluice_one() {  # build round case
   local build=$1 round=$2 case=$3 b=$new_bin left pid rc stopped="" note=""
@@ -319,7 +344,7 @@ main() {
   command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=index,name,driver_version,memory.total,memory.used --format=csv,noheader | sed 's/^/   GPU /'
   local spheric="" s100k="" gen_ok
 
-  if selected fluid1m || selected fluid || selected memory || selected sps; then
+  if selected fluid1m || selected fluid || selected violent || selected memory || selected sps; then
     spheric=$(shared_case Spheric2Dam_01M.xml) || spheric=""
   fi
   local fluid_args=("${backend[@]}" -symplectic -wendland -ddt:3 -tmax:"${FLUID_TMAX:-0.02}")
@@ -340,6 +365,16 @@ main() {
     if [[ -n "$spheric" ]] && ensure_case "spheric_dp$dp1" "$spheric" "$dp1"; then
       timed spheric_1.12M ns "spheric_dp$dp1" "" "${fluid_args[@]}"
     else no_case spheric_1.12M; fi
+  fi
+
+  if selected violent; then
+    local vt0=${VIOLENT_T0:-0.6} vsteps=${VIOLENT_STEPS:-300} vargs=("${backend[@]}" -symplectic -wendland -ddt:3)
+    echo "== violent: SPHERIC Test 2, dp $dp1 (1.12 M), $vsteps steps from a restart file at t = $vt0 s"
+    if [[ -n "$spheric" ]] && ensure_case "spheric_dp$dp1" "$spheric" "$dp1" &&
+       violent_restart "spheric_dp$dp1" "$vt0" "${vargs[@]}"; then
+      timed spheric_1.12M_late ns "spheric_dp$dp1" "" "${vargs[@]}" -restart:"$work/runs/violent_restart/restart.h5" \
+        -nsteps:$((violent_step + vsteps))
+    else no_case spheric_1.12M_late; fi
   fi
 
   if selected fluid || ((mem_ok)); then

@@ -78,6 +78,7 @@ BENCHES = [
     ("spheric_1.12M", "SPHERIC 1.12 M fluid", "ns/particle/step", "{:.3f}", 1116258),
     ("spheric_4.36M", "SPHERIC 4.36 M fluid", "ns/particle/step", "{:.3f}", 4360716),
     ("spheric_13.29M", "SPHERIC 13.29 M fluid", "ns/particle/step", "{:.3f}", 13292664),
+    ("spheric_1.12M_late", "SPHERIC 1.12 M after the impact", "ns/particle/step", "{:.3f}", 1116258),
     ("spheric_4.36M_sps", "SPHERIC 4.36 M laminar+SPS", "ns/particle/step", "{:.3f}", 4360716),
     ("mem_peak_4.36M", "GPU memory peak, 4.36 M run", "MiB (memory.used)", "{:.0f}", 4360716),
     ("mem_peak_13.29M", "GPU memory peak, 13.29 M run", "MiB (memory.used)", "{:.0f}", 13292664),
