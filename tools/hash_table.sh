@@ -48,6 +48,10 @@ sed "s|<parameters>|$norows|" "$root/cases/breaking_bar/BreakingBar_Def.xml" >"$
 gen "$work/BarNoRows_Def.xml" "$work/barnorows"
 sed "s|<parameters>|$norows|" "$root/cases/antoci_gate2d/AntociGate2D_Def.xml" >"$work/AntociNoRows_Def.xml"
 gen "$work/AntociNoRows_Def.xml" "$work/antocinorows" -dp:0.002
+# h = 2 dp with cells of h/2 = dp: the grid moved half a spacing off the fluid's lattice
+# (solver/grid_origin.h); the other rows' cells are not a whole number of spacings.
+sed 's|<coefh value="1.0"|<hdp value="2"|' "$root/cases/dambreak3d/DamBreak3D_Def.xml" >"$work/DbHdp2_Def.xml"
+gen "$work/DbHdp2_Def.xml" "$work/dbhdp2" -dp:0.03
 run db3d_sym_wend_art_ddt3 "$work/db3d" 40 -symplectic -wendland -viscoart:0.1 -ddt:3
 run db3d_verlet_cubic_lam_ddt1 "$work/db3d" 40 -verlet -cubic -viscolam:1e-6 -ddt:1
 run db3d_sym_wend_sps_ddt2 "$work/db3d" 40 -symplectic -wendland -viscolamsps:1e-6 -ddt:2
@@ -69,4 +73,5 @@ run contact_blocks2d "$work/blocks" 3000
 run pmma2d_contact "$work/pmmac" 800
 run bar_breaking_norows "$work/barnorows" 4000
 run gauges_antoci_norows "$work/antocinorows" 400
+run db3d_hdp2_centred "$work/dbhdp2" 40 -symplectic -wendland -viscoart:0.1 -ddt:3
 rm -rf "$work"

@@ -46,6 +46,7 @@ struct BackendSetup {
     PhysicsChoice physics;
     physics::FluidConstants fluid;
     physics::CellGrid grid;
+    bool grid_centred = false;  ///< its origin centres the fluid's lattice (solver/grid_origin.h)
     physics::StepConstants step;
     physics::SpsConstants sps;
     bool symplectic = true;

@@ -2,6 +2,7 @@
 /// \file simulation.cpp
 /// \brief A run's setup (backend data, cell division, physics line) and its outputs (see simulation.h).
 #include "solver/simulation.h"
+#include "solver/grid_origin.h"
 
 #include <cmath>
 #include <cstdio>
@@ -157,8 +158,10 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, in
     s.fluid = makeFluidConstants(fi);
     s.sps = makeSpsConstants(dp, c.constants.dimensions);
 
-    if (!makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
-                      c.domain_max.z, h, cell_div, s.grid, skin))
+    const GridOrigin origin = latticeCentredGridOrigin(c, 2.0 * h / double(cell_div));
+    s.grid_centred = origin.any();
+    if (!makeCellGrid(origin.min[0], origin.min[1], origin.min[2], c.domain_max.x, c.domain_max.y, c.domain_max.z,
+                      h, cell_div, s.grid, skin))
         throwInputError(c.xml_path, 0, "the simulation domain is too large for the cell grid (" +
                         std::to_string(s.grid.ncx) + " x " + std::to_string(s.grid.ncy) + " x " +
                         std::to_string(s.grid.ncz) + " cells of " + fmt("%g", s.grid.cellsize) + " m)");
@@ -242,6 +245,11 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
         describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
+    if (setup_.grid_centred) {
+        const physics::CellGrid& g = setup_.grid;
+        log_ << "  cell grid from (" << fmt("%.9g", g.minx) << ", " << fmt("%.9g", g.miny) << ", " << fmt("%.9g", g.minz)
+             << ") m: the fluid's lattice half a spacing from the cell faces\n";
+    }
     if (setup_.mdbc.enabled)
         log_ << "  mDBC: " << setup_.mdbc.with_normal << " of " << setup_.nbound
              << " boundary particles have a ghost node"

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "solver/grid_origin.h"
 #include "solver_test_util.h"
 
 using namespace seaspring;
@@ -132,6 +133,38 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes3D) {
         maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
     EXPECT_LT(maxdiff, 1e-5);
     EXPECT_NE(r1.summary.options.find("cells of 2h/3"), std::string::npos) << r1.summary.options;  // h < 2 dp
+}
+
+// h = 2 dp (SPHERIC Test 2's choice) and cells of h/2 = dp: the cell grid starts half a spacing
+// below the fluid's lattice (solver/grid_origin.h). Thread counts still give the same bits, and
+// the run stays close to one with the lattice on the cell faces (cells of 2h/3, from the
+// domain's minimum): only the rounding of the cell-relative positions and the summation order differ.
+TEST(SolverParity, ThreadCountsGiveIdenticalHashesOnALatticeCentredGrid) {
+    const std::string dir = scratch("centred");
+    std::string def = test::readFile(std::string(SEASPRING_SOURCE_DIR) + "/cases/dambreak3d/DamBreak3D_Def.xml");
+    const std::string coefh = "<coefh value=\"1.0\"";
+    const std::size_t at = def.find(coefh);
+    ASSERT_NE(at, std::string::npos);
+    def.replace(at, coefh.size(), "<hdp value=\"2\"");
+    const std::string kase = test::generateCase(dir, "db", def, 0.04);
+    auto steps = [](solver::RunOptions& o) { o.nsteps = 25; };
+    const auto r1 = test::runCpu(kase, dir + "/out1", 1, steps);
+    const auto r2 = test::runCpu(kase, dir + "/out2", 2, steps);
+    ASSERT_NEAR(r1.kase.constants.h, 2.0 * r1.kase.constants.dp, 1e-12);
+    EXPECT_NE(r1.summary.options.find("cells of h/2"), std::string::npos) << r1.summary.options;
+    const solver::GridOrigin o = solver::latticeCentredGridOrigin(r1.kase, r1.kase.constants.dp);
+    EXPECT_TRUE(o.centred[0] && o.centred[1] && o.centred[2]);
+    EXPECT_EQ(r1.summary.state_hash, r2.summary.state_hash);
+    const auto r3 = test::runCpu(kase, dir + "/out3", 2, [](solver::RunOptions& o) {
+        o.nsteps = 25;
+        o.cell_div = 3;
+    });
+    EXPECT_FALSE(solver::latticeCentredGridOrigin(r3.kase, 2.0 * r3.kase.constants.h / 3.0).any());
+    EXPECT_NE(r3.summary.state_hash, r1.summary.state_hash);
+    double maxdiff = 0;
+    for (std::size_t i = 0; i < r1.state.pos.size(); ++i)
+        maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
+    EXPECT_LT(maxdiff, 1e-5);
 }
 
 // -cellmode:auto: in 3D cells of h/2, or 2h/3 where h/2 would be narrower than dp, and h in 2D,
