@@ -95,9 +95,8 @@ struct PairBatch {
     std::uint8_t ln[kCap];
     float bx[kCap], by[kCap], bz[kCap], br[kCap];
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
-    float tfrx[kCap], tfry[kCap], tfrz[kCap], tcf[kCap], tar[kCap], tdelta[kCap], tvisc[kCap];
+    float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kCap], tar[kCap], tdelta[kCap], tvisc[kCap];
     float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
-    float tsx[kSps ? kCap : 1], tsy[kSps ? kCap : 1], tsz[kSps ? kCap : 1];
     float tgxx[kSps ? kCap : 1], tgxy[kSps ? kCap : 1], tgxz[kSps ? kCap : 1], tgyy[kSps ? kCap : 1],
         tgyz[kSps ? kCap : 1], tgzz[kSps ? kCap : 1];
     int m = 0;
@@ -110,9 +109,9 @@ struct PairBatch {
         for (int q = 0; q < n; ++q) {  // SIMD lanes
             const PairTerms t =
                 fluidPairTerms<Opt, kBound>(sj[q], sx[q], sy[q], sz[q], sr[q], va, ovrhoa, pressa, taua, in, c);
-            tfrx[q] = t.frx;
-            tfry[q] = t.fry;
-            tfrz[q] = t.frz;
+            tmx[q] = t.mx;
+            tmy[q] = t.my;
+            tmz[q] = t.mz;
             tcf[q] = t.cf;
             tar[q] = t.ar;
             tdelta[q] = t.delta;
@@ -124,18 +123,15 @@ struct PairBatch {
                 tdvz[q] = t.dvz;
             }
             if constexpr (kSps) {
-                tsx[q] = t.sx;
-                tsy[q] = t.sy;
-                tsz[q] = t.sz;
                 tgxx[q] = t.gv.xx; tgxy[q] = t.gv.xy; tgxz[q] = t.gv.xz;
                 tgyy[q] = t.gv.yy; tgyz[q] = t.gv.yz; tgzz[q] = t.gv.zz;
             }
         }
         for (int q = 0; q < n; ++q) {  // in candidate order
             PairTerms t;
-            t.frx = tfrx[q];
-            t.fry = tfry[q];
-            t.frz = tfrz[q];
+            t.mx = tmx[q];
+            t.my = tmy[q];
+            t.mz = tmz[q];
             t.cf = tcf[q];
             t.ar = tar[q];
             t.delta = tdelta[q];
@@ -147,9 +143,6 @@ struct PairBatch {
                 t.dvz = tdvz[q];
             }
             if constexpr (kSps) {
-                t.sx = tsx[q];
-                t.sy = tsy[q];
-                t.sz = tsz[q];
                 t.gv = SymTensor{tgxx[q], tgxy[q], tgxz[q], tgyy[q], tgyz[q], tgzz[q]};
             }
             addPairTerms<Opt, kBound>(acc[ln[q]], t);
@@ -326,13 +319,12 @@ SEASPRING_HD inline void boundPair(std::uint32_t j, float drx, float dry, float 
                                    const InteractionInputs& in, const FluidConstants& c, float& ar,
                                    float& visc) {
     using K = typename Opt::Kernel;
-    const float fac = K::template gradFactor<true>(rr2, c.ker);
-    const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
+    const float fac = K::template gradFactor<true>(rr2, c.ker);  // grad W = fac r_ab
     const Float4 vb = in.velrho[j];
     const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-    const float dot_vf = fma32(dvx, frx, fma32(dvy, fry, dvz * frz));
-    ar = fma32(c.massfluid * dot_vf, va.w * in.press_ovrho[j].y, ar);
     const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+    const float dot_vf = fac * dot_vr;  // v_ab . grad W
+    ar = fma32(c.massfluid * dot_vf, va.w * in.press_ovrho[j].y, ar);
     visc = maxf(visc, viscDtPair(dot_vr, reciprocalNormalRange(rr2 + c.eta2)));
 }
 

@@ -53,11 +53,15 @@ struct FluidAccum {
 
 /// What pair (a, b) adds to fluid particle a, before it is summed (addPairTerms).
 struct PairTerms {
-    float frx, fry, frz;   ///< grad W_ab
-    float cf;              ///< coefficient of grad W_ab in dv_a/dt (pressure, artificial viscosity)
+    /// The vector that cf multiplies in dv_a/dt. Without SPS r_ab, cf holding the coefficient
+    /// of grad W_ab (pressure, artificial viscosity) times the kernel's gradient factor F
+    /// (grad W_ab = F r_ab): one product per pair instead of grad W's three. With SPS
+    /// ((tau_a + tau_b) - P I) . grad W_ab, the pressure P = (p_a + p_b)/(rho_a rho_b) joined to
+    /// the stress's diagonal, and cf = m_b.
+    float mx, my, mz;
+    float cf;
     float cv;              ///< coefficient of v_ab in dv_a/dt (laminar viscosity)
     float dvx, dvy, dvz;   ///< v_ab (laminar)
-    float sx, sy, sz;      ///< SPS stress term of dv_a/dt
     float ar;              ///< continuity term of d(rho_a)/dt
     float delta;           ///< density diffusion term
     float visc;            ///< viscous dt measure v_ab.r_ab / (r^2 + eta2)
@@ -76,10 +80,7 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const float massb = kBound ? c.massbound : c.massfluid;
     const float visco = kBound ? c.visco_bound : c.visco;
     PairTerms t;
-    const float fac = K::template gradFactor<true>(rr2, c.ker);
-    t.frx = fac * drx;
-    t.fry = fac * dry;
-    t.frz = fac * drz;
+    const float fac = K::template gradFactor<true>(rr2, c.ker);  // grad W_ab = fac r_ab
     const Float4 vb = in.velrho[j];
     const Float2 pb2 = in.press_ovrho[j];
     const float pressb = pb2.x, ovrhob = pb2.y;
@@ -92,22 +93,24 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
         prs += CubicKernel::tensileCorrection(rr2, pressa, va.w, pressb, vb.w, c.ker);
     t.cf = -prs * massb;
 
-    // Continuity.
+    // Continuity: v_ab . grad W = fac (v_ab . r_ab).
     const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
-    const float dot_vf = fma32(dvx, t.frx, fma32(dvy, t.fry, dvz * t.frz));
+    const float dvdr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+    const float dot_vf = fac * dvdr;
     t.ar = dot_vf * (ovrhob * (massb * va.w));  // massb * rho_a: per particle
 
     // Viscous time-step measure and viscosity: against an mDBC SlipMode 2/3 boundary particle,
     // its viscous velocity (DualSPHysics' tangenvel), the wall's in the continuity term above.
     float wvx = dvx, wvy = dvy, wvz = dvz;
+    float dot_vr = dvdr;
     if (kBound && in.bound_visc_vel) {
         const Float4 vv = in.bound_visc_vel[j];
         wvx = va.x - vv.x;
         wvy = va.y - vv.y;
         wvz = va.z - vv.z;
+        dot_vr = fma32(drx, wvx, fma32(dry, wvy, drz * wvz));
     }
-    const float dot_vr = fma32(drx, wvx, fma32(dry, wvy, drz * wvz));
-    const float dot3 = fma32(drx, t.frx, fma32(dry, t.fry, drz * t.frz));  // r . grad W
+    const float dot3 = fac * rr2;  // r . grad W = fac |r|^2
     t.visc = viscDtPair(dot_vr, ov_r2eta);
     if (Opt::visco == Viscosity::Artificial) {
         t.cf -= artificialViscosityFactor(t.visc, ov_rhosum, massb, visco, c.cs0, c.ker.h);
@@ -117,18 +120,28 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
         t.dvy = wvy;
         t.dvz = wvz;
         if (Opt::sps) {
+            const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
             SymTensor ts = taua;
             if (!kBound) {
                 const SymTensor tb = in.tau[j];
                 ts.xx += tb.xx; ts.xy += tb.xy; ts.xz += tb.xz;
                 ts.yy += tb.yy; ts.yz += tb.yz; ts.zz += tb.zz;
             }
-            t.sx = massb * fma32(ts.xx, t.frx, fma32(ts.xy, t.fry, ts.xz * t.frz));
-            t.sy = massb * fma32(ts.xy, t.frx, fma32(ts.yy, t.fry, ts.yz * t.frz));
-            t.sz = massb * fma32(ts.xz, t.frx, fma32(ts.yz, t.fry, ts.zz * t.frz));
+            // m_b (tau_a + tau_b) . grad W - m_b P grad W = m_b ((tau_a + tau_b) - P I) . grad W.
+            const float txx = ts.xx - prs, tyy = ts.yy - prs, tzz = ts.zz - prs;
+            t.mx = fma32(txx, frx, fma32(ts.xy, fry, ts.xz * frz));
+            t.my = fma32(ts.xy, frx, fma32(tyy, fry, ts.yz * frz));
+            t.mz = fma32(ts.xz, frx, fma32(ts.yz, fry, tzz * frz));
+            t.cf = massb;
             t.gv = kBound ? SymTensor{0, 0, 0, 0, 0, 0}
-                          : velocityGradientTerms(dvx, dvy, dvz, t.frx, t.fry, t.frz, massb, ovrhob);
+                          : velocityGradientTerms(dvx, dvy, dvz, frx, fry, frz, massb, ovrhob);
         }
+    }
+    if (!Opt::sps) {  // cf r_ab with cf = F x the coefficient of grad W
+        t.cf *= fac;
+        t.mx = drx;
+        t.my = dry;
+        t.mz = drz;
     }
 
     // Density diffusion (DensityDT 1 and 2 are switched off by any boundary neighbour:
@@ -142,25 +155,20 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     return t;
 }
 
-/// Adds the acceleration of one pair to (ax, ay, az): cf grad W (pressure, artificial
-/// viscosity), + cv v_ab (laminar viscosity), + the SPS stress term; the one source of the
+/// Adds the acceleration of one pair to (ax, ay, az): cf m (pressure, artificial viscosity, the
+/// SPS stress: PairTerms), + cv v_ab (laminar viscosity); the one source of the
 /// momentum contribution of a pair, for the fluid particle's sum (addPairTerms) and for the
 /// reaction on a boundary particle (hydroForceOnBoundary). Starting from -0.f gives the pair's
 /// acceleration alone, bit for bit: fma32(a, b, -0.f) = round(a b), the sign of zero included.
 template <class Opt>
 SEASPRING_HD inline void addPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
-    ax = fma32(t.cf, t.frx, ax);
-    ay = fma32(t.cf, t.fry, ay);
-    az = fma32(t.cf, t.frz, az);
+    ax = fma32(t.cf, t.mx, ax);
+    ay = fma32(t.cf, t.my, ay);
+    az = fma32(t.cf, t.mz, az);
     if (Opt::visco != Viscosity::Artificial) {
         ax = fma32(t.cv, t.dvx, ax);
         ay = fma32(t.cv, t.dvy, ay);
         az = fma32(t.cv, t.dvz, az);
-        if (Opt::sps) {
-            ax += t.sx;
-            ay += t.sy;
-            az += t.sz;
-        }
     }
 }
 

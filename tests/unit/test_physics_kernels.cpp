@@ -243,21 +243,16 @@ std::uint32_t bitsOf(float f) {
 }
 
 /// The reaction on a boundary particle as it was computed before addPairAcceleration: the plain
-/// products cf grad W, then the fused laminar term, then the SPS term.
+/// products cf m (m: PairTerms), then the fused laminar term.
 template <class Opt>
 void plainPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
-    ax = t.cf * t.frx;
-    ay = t.cf * t.fry;
-    az = t.cf * t.frz;
+    ax = t.cf * t.mx;
+    ay = t.cf * t.my;
+    az = t.cf * t.mz;
     if (Opt::visco != Viscosity::Artificial) {
         ax = fma32(t.cv, t.dvx, ax);
         ay = fma32(t.cv, t.dvy, ay);
         az = fma32(t.cv, t.dvz, az);
-        if (Opt::sps) {
-            ax += t.sx;
-            ay += t.sy;
-            az += t.sz;
-        }
     }
 }
 
@@ -271,16 +266,15 @@ void checkAccelerationFromMinusZero() {
         PairTerms t{};
         // Zero factors of either sign (a product of +-0 keeps its sign only without an addend).
         auto pick = [&](int k) { return (n >> k) % 7 == 0 ? zeros[(n >> (k + 3)) & 1] : u(rng); };
-        t.frx = pick(0), t.fry = pick(1), t.frz = pick(2), t.cf = pick(3);
+        t.mx = pick(0), t.my = pick(1), t.mz = pick(2), t.cf = pick(3);
         t.cv = pick(4), t.dvx = pick(5), t.dvy = pick(6), t.dvz = u(rng);
-        t.sx = u(rng), t.sy = u(rng), t.sz = u(rng);
         float ax = -0.f, ay = -0.f, az = -0.f, px, py, pz;
         addPairAcceleration<Opt>(t, ax, ay, az);
         plainPairAcceleration<Opt>(t, px, py, pz);
         ASSERT_EQ(bitsOf(ax), bitsOf(px)) << n;
         ASSERT_EQ(bitsOf(ay), bitsOf(py)) << n;
         ASSERT_EQ(bitsOf(az), bitsOf(pz)) << n;
-        zero_products += t.cf * t.frx == 0.f ? 1 : 0;
+        zero_products += t.cf * t.mx == 0.f ? 1 : 0;
     }
     EXPECT_GT(zero_products, 1000);  // signed zero products were exercised
 }

@@ -295,24 +295,26 @@ TEST(Sps, StressDivergenceOfALinearStressField) {
     EXPECT_NEAR(acc.az, az, 1e-5 * std::fabs(az));
 }
 
-TEST(Sps, StressDivergenceOfAGeneralLinearStressField3D) {
-    // The same term in 3D with every component of tau/rho linear in x, y and z, each with its own
-    // slopes (s[c][k] = d tau_c / d x_k), so that every component meets every gradient
-    // direction: a_i = rho0 grad sum_j d tau_ij / d x_j, i.e.
-    //   a_x = rho0 grad (xx_x + xy_y + xz_z), a_y = rho0 grad (xy_x + yy_y + yz_z),
-    //   a_z = rho0 grad (xz_x + yz_y + zz_z)
-    // (the lattice's second moment sum m_b F r_j r_k is grad delta_jk by cubic symmetry). The 2D
-    // test above never multiplies xy, yy or yz by a non-zero gradient component. Broken on
-    // purpose (tau_xz in the place of tau_xy in t.sx): a_x = 4.2 instead of 5.3 (x rho0 grad
-    // 1e-4): fails. Tolerance 1e-5 relative, as the 2D test: float sums of about 120 pairs whose
-    // odd parts (the particle's own tau, about 3 times the result) cancel.
+namespace {
+
+// Slopes of the 3D fields below: s[c][k] = d tau_c / d x_k (times 1e-4), gp[k] = d p / d x_k.
+const double kTauSlopes[6][3] = {{1.1, -0.7, 0.4}, {0.3, 1.9, -1.3}, {-0.6, 0.8, 2.3},   // xx, xy, xz
+                                 {0.5, -1.7, 0.9}, {1.4, 0.2, -2.1}, {-0.9, 1.2, 2.7}};  // yy, yz, zz
+const double kPressSlopes[3] = {310.0, -170.0, 240.0};  // Pa/m
+const double kPressA = 12.0;                             // Pa at particle a
+const double kRa[3] = {0.21, 0.34, 0.27};
+
+/// Particle a at kRa of a cubic lattice (dp 0.01, h 1.5 dp) at rest, every particle's tau/rho
+/// linear in x, y and z (kTauSlopes; with_tau false: zero) and its pressure p_a + gp . (r - r_a)
+/// (with_press false: zero): a's sums over all its neighbours (fluidPair in lattice order).
+template <class Opt>
+FluidAccum linearFieldSums3D(bool with_tau, bool with_press) {
     const double dp = 0.01, hdp = 1.5;
-    const double s[6][3] = {{1.1, -0.7, 0.4}, {0.3, 1.9, -1.3}, {-0.6, 0.8, 2.3},   // xx, xy, xz
-                            {0.5, -1.7, 0.9}, {1.4, 0.2, -2.1}, {-0.9, 1.2, 2.7}};  // yy, yz, zz
-    const double ra[3] = {0.21, 0.34, 0.27};
     auto tauAt = [&](double x, double y, double z) {
         float v[6];
-        for (int c = 0; c < 6; ++c) v[c] = float(1e-4 * (s[c][0] * x + s[c][1] * y + s[c][2] * z));
+        for (int c = 0; c < 6; ++c)
+            v[c] = with_tau ? float(1e-4 * (kTauSlopes[c][0] * x + kTauSlopes[c][1] * y + kTauSlopes[c][2] * z))
+                            : 0.f;
         return SymTensor{v[0], v[1], v[2], v[3], v[4], v[5]};
     };
     const FluidConstants c = makeConstants(dp, hdp, 3, 1e-6);
@@ -330,21 +332,40 @@ TEST(Sps, StressDivergenceOfAGeneralLinearStressField3D) {
             for (int i = -n; i <= n; ++i) {
                 const float drx = float(-i * dp), dry = float(-j * dp), drz = float(-k * dp);
                 const float rr2 = fma32(drx, drx, fma32(dry, dry, drz * drz));
+                const double pb = kPressA + dp * (kPressSlopes[0] * i + kPressSlopes[1] * j + kPressSlopes[2] * k);
                 velrho.push_back(Float4{0, 0, 0, float(kRho0)});
-                press.push_back(Float2{0.f, float(1.0 / kRho0)});
-                taus.push_back(tauAt(ra[0] + i * dp, ra[1] + j * dp, ra[2] + k * dp));
+                press.push_back(Float2{with_press ? float(pb) : 0.f, float(1.0 / kRho0)});
+                taus.push_back(tauAt(kRa[0] + i * dp, kRa[1] + j * dp, kRa[2] + k * dp));
                 if (isNeighbour(rr2, c)) nb.push_back(Pair3{std::uint32_t(velrho.size() - 1), drx, dry, drz, rr2});
             }
     InteractionInputs in;
     in.velrho = velrho.data();
     in.press_ovrho = press.data();
     in.tau = taus.data();
-    const SymTensor taua = tauAt(ra[0], ra[1], ra[2]);
+    const SymTensor taua = tauAt(kRa[0], kRa[1], kRa[2]);
     FluidAccum acc;
     for (const Pair3& p : nb)
-        fluidPair<OptSps3, false>(p.j, p.drx, p.dry, p.drz, p.rr2, Float4{0, 0, 0, float(kRho0)},
-                                  float(1.0 / kRho0), 0.f, taua, in, c, acc);
-    const double g = kRho0 * 1e-4 * handLatticeSums(hdp, 3).grad;
+        fluidPair<Opt, false>(p.j, p.drx, p.dry, p.drz, p.rr2, Float4{0, 0, 0, float(kRho0)}, float(1.0 / kRho0),
+                              with_press ? float(kPressA) : 0.f, taua, in, c, acc);
+    return acc;
+}
+
+}  // namespace
+
+TEST(Sps, StressDivergenceOfAGeneralLinearStressField3D) {
+    // The same term in 3D with every component of tau/rho linear in x, y and z, each with its own
+    // slopes (s[c][k] = d tau_c / d x_k), so that every component meets every gradient
+    // direction: a_i = rho0 grad sum_j d tau_ij / d x_j, i.e.
+    //   a_x = rho0 grad (xx_x + xy_y + xz_z), a_y = rho0 grad (xy_x + yy_y + yz_z),
+    //   a_z = rho0 grad (xz_x + yz_y + zz_z)
+    // (the lattice's second moment sum m_b F r_j r_k is grad delta_jk by cubic symmetry). The 2D
+    // test above never multiplies xy, yy or yz by a non-zero gradient component. Broken on
+    // purpose (tau_xz in the place of tau_xy in the x component; -tau_xy there): fails.
+    // Tolerance 1e-5 relative, as the 2D test: float sums of about 120 pairs whose odd parts (the
+    // particle's own tau, about 3 times the result) cancel.
+    const FluidAccum acc = linearFieldSums3D<OptSps3>(true, false);
+    const double g = kRho0 * 1e-4 * handLatticeSums(1.5, 3).grad;
+    const double (&s)[6][3] = kTauSlopes;
     const double ax = g * (s[0][0] + s[1][1] + s[2][2]);
     const double ay = g * (s[1][0] + s[3][1] + s[4][2]);
     const double az = g * (s[2][0] + s[4][1] + s[5][2]);
@@ -353,6 +374,35 @@ TEST(Sps, StressDivergenceOfAGeneralLinearStressField3D) {
     EXPECT_NEAR(acc.ax, ax, 1e-5 * std::fabs(ax));
     EXPECT_NEAR(acc.ay, ay, 1e-5 * std::fabs(ay));
     EXPECT_NEAR(acc.az, az, 1e-5 * std::fabs(az));
+}
+
+TEST(Sps, PressureJoinsTheStressOnEveryAxis3D) {
+    // With SPS the pair's pressure rides on the stress's diagonal ((tau_a + tau_b) - P I) . grad W
+    // (PairTerms). A linear pressure p_a + gp . (r - r_a) gives a = -(grad / rho0) gp on the lattice
+    // (the same second moment as above), with or without a stress; and the SPS path's pressure
+    // term equals the plain one (laminar viscosity, cf r_ab) to float rounding. Broken on purpose
+    // (the pressure added to tau_yy instead of subtracted): a_y off by 2 (grad / rho0) gp_y: fails.
+    // Tolerance 1e-5 relative: the odd parts (2 p_a, about 5 times the pressure's result) cancel
+    // as the stress's do.
+    const double grad = handLatticeSums(1.5, 3).grad;
+    const double ap[3] = {-grad / kRho0 * kPressSlopes[0], -grad / kRho0 * kPressSlopes[1],
+                          -grad / kRho0 * kPressSlopes[2]};
+    const FluidAccum sps = linearFieldSums3D<OptSps3>(false, true);
+    const FluidAccum lam = linearFieldSums3D<FluidOptions<WendlandKernel, Viscosity::Laminar, DensityDiffusion::None, 3>>(
+        false, true);
+    std::printf("[sps pressure 3D] a = (%.6e, %.6e, %.6e), laminar (%.6e, %.6e, %.6e), hand (%.6e, %.6e, %.6e)\n",
+                sps.ax, sps.ay, sps.az, lam.ax, lam.ay, lam.az, ap[0], ap[1], ap[2]);
+    const float got[3] = {sps.ax, sps.ay, sps.az}, plain[3] = {lam.ax, lam.ay, lam.az};
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(got[k], ap[k], 1e-5 * std::fabs(ap[k])) << "axis " << k;
+        EXPECT_NEAR(plain[k], ap[k], 1e-5 * std::fabs(ap[k])) << "axis " << k;
+    }
+    // Both fields at once: the sum of the two results.
+    const FluidAccum both = linearFieldSums3D<OptSps3>(true, true);
+    const FluidAccum tau = linearFieldSums3D<OptSps3>(true, false);
+    const float all[3] = {both.ax, both.ay, both.az}, st[3] = {tau.ax, tau.ay, tau.az};
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(all[k], st[k] + ap[k], 1e-5 * (std::fabs(st[k]) + std::fabs(ap[k]))) << "axis " << k;
 }
 
 TEST(Sps, VelocityGradientSumsOfAGeneralLinearFlow3D) {
