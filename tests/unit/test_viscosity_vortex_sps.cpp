@@ -43,9 +43,12 @@
 ///   C laminarViscosityFactor with 2 nu instead of 4 nu (a factor 2 dropped): Taylor–Green
 ///     fails (and all 6 channel tests): TG rate 0.491 of 2 nu k^2.
 ///   Also: Blin 0.066 instead of 0.0066: the SPS stress test fails (tau_xx 10x). SPS momentum
-///     term sign (t.sx = -massb ...): the SPS divergence test fails (a_x = -0.299 vs 0.299).
+///     term sign (then t.sx = -massb ...): the SPS divergence test fails (a_x = -0.299 vs 0.299).
 ///     tau_xz in the place of tau_xy in t.sx, or tau_xz in the place of tau_yz in t.sy (twelfth
 ///     session): only the 3D divergence test fails (a_x 0.420 vs 0.530; a_y 0.090 vs -0.350).
+///     Seventeenth session (the pressure on the stress's diagonal, t.mx..t.mz): -tau_xy in the x
+///     component fails the 3D divergence test; the pressure added to tau_yy (no test saw it
+///     before) fails Sps.PressureJoinsTheStressOnEveryAxis3D.
 ///     The yz velocity-gradient term formed as uy frz + uz frx: the general-flow test fails (and
 ///     test_physics_kernels' term test); t.gv.xz added into gradvel.yz: it and the uniform-shear
 ///     test fail.
