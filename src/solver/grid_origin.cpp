@@ -22,11 +22,15 @@ GridOrigin latticeCentredGridOrigin(const SolverCase& c, double cellsize) {
     const std::size_t first = std::size_t(c.nfixed) + c.nmoving + c.nsolid;
     const std::size_t np = c.particles.pos.size();
     if (!(dp > 0.0) || c.nfluid == 0 || first >= np) return o;
-    const double cells_per_dp = cellsize / dp;
-    const double m = std::nearbyint(cells_per_dp);
-    if (m < 1.0 || std::fabs(cells_per_dp - m) > 1e-9 * m) return o;
+    const double spacings = cellsize / dp;  // lattice spacings per cell
+    const double m = std::nearbyint(spacings);
+    if (m < 1.0) return o;
+    const double hi[3] = {c.domain_max.x, c.domain_max.y, c.domain_max.z};
     for (int a = 0; a < 3; ++a) {
         if (a == 1 && c.constants.dimensions == 2) continue;
+        // The planes drift against the faces by |m - spacings| dp per cell: at most kMaxDrift
+        // over the domain (a coefh written to six digits, e.g. 0.866025 for h = 1.5 dp).
+        if (std::fabs(spacings - m) * (hi[a] - lo[a] + cellsize) / cellsize > kMaxLatticeDrift) continue;
         const double x0 = coord(c.particles.pos[first], a);
         std::size_t on = 0;
         for (std::size_t i = first; i < np; ++i) {

@@ -25,8 +25,14 @@ struct GridOrigin {
     bool any() const { return centred[0] || centred[1] || centred[2]; }
 };
 
+/// How far, in lattice spacings, the lattice planes may drift against the cell faces over the
+/// domain for the cells to count as a whole number of spacings (latticeCentredGridOrigin): the
+/// planes then stay at least 0.4 spacings from the faces.
+constexpr double kMaxLatticeDrift = 0.1;
+
 /// The grid origin of case `c` for cells of `cellsize`. Per axis (2D: x and z): when the cell
-/// size is a whole number of spacings (within 1e-9 relative) and at least 90% of the fluid
+/// size is a whole number m of spacings (the planes drifting by at most kMaxLatticeDrift
+/// spacings against the faces over the domain's extent on that axis) and at least 90% of the fluid
 /// particles lie within 1e-3 dp of the planes x0 + k dp (x0: the first fluid particle's
 /// coordinate), the largest x0 + dp/2 + n cellsize not above the domain's minimum; otherwise the
 /// domain's minimum. Computed from the case's particles (a restart reads the same case, so the

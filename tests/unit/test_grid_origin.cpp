@@ -136,6 +136,23 @@ TEST(GridOrigin, CellsThatAreNotAWholeNumberOfSpacingsKeepTheDomainMinimum) {
     }
 }
 
+TEST(GridOrigin, CellsWithinADriftOfATenthOfASpacingCountAsWhole) {
+    // coefh 0.866025 for h = 1.5 dp (the sluice gate's): cells of 2h/3 = 0.9999997 dp. Over the
+    // 12 spacings of this domain the planes drift by 4e-6 spacings: centred. Cells of 1.005 dp
+    // drift by 0.065 (centred), of 1.01 dp by 0.13 (not).
+    const solver::SolverCase c = latticeCase(3, 12);
+    const double cs6 = 2.0 * (0.866025 * std::sqrt(3.0) * kDp) / 3.0;
+    EXPECT_TRUE(latticeCentredGridOrigin(c, cs6).any());
+    EXPECT_TRUE(latticeCentredGridOrigin(c, 1.005 * kDp).any());
+    EXPECT_FALSE(latticeCentredGridOrigin(c, 1.01 * kDp).any());
+    // The same 0.9999997 dp cells over a domain of 10^6 spacings drift by 0.25: not centred.
+    solver::SolverCase wide = c;
+    wide.domain_max.x = wide.domain_min.x + 1e6 * kDp;
+    const solver::GridOrigin o = latticeCentredGridOrigin(wide, cs6);
+    EXPECT_FALSE(o.centred[0]);
+    EXPECT_TRUE(o.centred[1] && o.centred[2]);
+}
+
 TEST(GridOrigin, ADisorderedFluidKeepsTheDomainMinimum) {
     const GridOrigin o = latticeCentredGridOrigin(latticeCase(3, 8, 0.2), kDp);
     EXPECT_FALSE(o.any());
