@@ -28,7 +28,7 @@ GridOrigin latticeCentredGridOrigin(const SolverCase& c, double cellsize) {
     const double hi[3] = {c.domain_max.x, c.domain_max.y, c.domain_max.z};
     for (int a = 0; a < 3; ++a) {
         if (a == 1 && c.constants.dimensions == 2) continue;
-        // The planes drift against the faces by |m - spacings| dp per cell: at most kMaxDrift
+        // The planes drift against the faces by |m - spacings| dp per cell: at most kMaxLatticeDrift spacings
         // over the domain (a coefh written to six digits, e.g. 0.866025 for h = 1.5 dp).
         if (std::fabs(spacings - m) * (hi[a] - lo[a] + cellsize) / cellsize > kMaxLatticeDrift) continue;
         const double x0 = coord(c.particles.pos[first], a);
