@@ -2,7 +2,6 @@
 /// \file simulation.cpp
 /// \brief A run's setup (backend data, cell division, physics line) and its outputs (see simulation.h).
 #include "solver/simulation.h"
-#include "solver/grid_origin.h"
 
 #include <cmath>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include "physics/eos_tait.h"
 #include "solver/coupling_ledger.h"
 #include "solver/gauge_system.h"
+#include "solver/grid_origin.h"
 #include "solver/run_limits.h"
 #include "solver/simulation_parts.h"
 
