@@ -219,6 +219,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
     setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o), o.pair_lanes);
+    setup_.row_extents = o.row_extents;
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
