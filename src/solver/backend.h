@@ -62,7 +62,7 @@ struct BackendSetup {
     /// two <= physics::kMaxPairLanes.
     std::uint32_t pair_lanes = 1;
     /// The pair loops bound their rows by the particles' extent (RunOptions::row_extents).
-    bool row_extents = true;
+    bool row_extents = false;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
 };
 
