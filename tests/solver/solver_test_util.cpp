@@ -81,14 +81,12 @@ std::string generateCase(const std::string& dir, const std::string& name, const 
     return generateCaseFile(dir, name, def, dp);
 }
 
-SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,
-                 const std::function<void(solver::RunOptions&)>& tweak,
-                 const solver::Simulation::OutputObserver& observe) {
+SolverRun runOn(std::unique_ptr<solver::Backend> backend, const std::string& case_path, const std::string& outdir,
+                const std::function<void(solver::RunOptions&)>& tweak,
+                const solver::Simulation::OutputObserver& observe) {
     SolverRun r;
     r.kase = solver::loadSolverCase(case_path);
     solver::RunOptions o;
-    o.backend = solver::RunOptions::Backend::Cpu;
-    o.threads = threads;
     o.case_path = case_path;
     o.outdir = outdir;
     o.quiet = true;
@@ -98,11 +96,24 @@ SolverRun runCpu(const std::string& case_path, const std::string& outdir, int th
     if (o.tmax) r.kase.params.time_max = *o.tmax;
     if (o.tout) r.kase.params.time_out = *o.tout;
     std::ostringstream log;
-    solver::Simulation sim(r.kase, o, solver::makeCpuBackend(threads), log);
+    solver::Simulation sim(r.kase, o, std::move(backend), log);
     if (observe) sim.onOutput(observe);
     r.summary = sim.run();
     r.state = sim.finalState();
     return r;
+}
+
+SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,
+                 const std::function<void(solver::RunOptions&)>& tweak,
+                 const solver::Simulation::OutputObserver& observe) {
+    return runOn(
+        solver::makeCpuBackend(threads), case_path, outdir,
+        [&](solver::RunOptions& o) {
+            o.backend = solver::RunOptions::Backend::Cpu;
+            o.threads = threads;
+            if (tweak) tweak(o);
+        },
+        observe);
 }
 
 }  // namespace seaspring::test

@@ -41,6 +41,11 @@ struct SolverRun {
     solver::SolverCase kase;
 };
 
+/// Runs the case on `backend` (not null); `tweak` edits options (tmax, nsteps, overrides...).
+SolverRun runOn(std::unique_ptr<solver::Backend> backend, const std::string& case_path, const std::string& outdir,
+                const std::function<void(solver::RunOptions&)>& tweak = {},
+                const solver::Simulation::OutputObserver& observe = {});
+
 /// Runs the case on the CPU backend; `tweak` edits options (tmax, nsteps, overrides...).
 /// `observe` (optional) sees the state at every output time (TimeOut; saving is off).
 SolverRun runCpu(const std::string& case_path, const std::string& outdir, int threads,

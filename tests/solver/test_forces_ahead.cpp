@@ -54,20 +54,8 @@ solver::RunSummary runOn(const std::string& kase_path, const std::string& outdir
                          const std::function<void(solver::RunOptions&)>& tweak) {
     if (ahead) unsetenv("SEASPRING_FORCES_AHEAD");
     else setenv("SEASPRING_FORCES_AHEAD", "0", 1);
-    solver::SolverCase kase = solver::loadSolverCase(kase_path);
-    solver::RunOptions o;
-    o.case_path = kase_path;
-    o.outdir = outdir;
-    o.quiet = true;
-    o.save_h5 = false;
-    tweak(o);
-    solver::applyOverrides(o, kase.params);
-    if (o.tmax) kase.params.time_max = *o.tmax;
-    if (o.tout) kase.params.time_out = *o.tout;
     std::string why;
-    std::ostringstream log;
-    solver::Simulation sim(kase, o, Kind::make(why), log);
-    return sim.run();
+    return test::runOn(Kind::make(why), kase_path, outdir, tweak).summary;
 }
 
 /// Both ways on one case: same hash, same divides and sorts, and divides that both sorted and

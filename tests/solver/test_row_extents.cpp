@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "backend_kinds.h"
@@ -54,25 +53,13 @@ struct Run {
 /// One run on a backend of kind K: `extents` on or off, `lanes` pair lanes (0: auto), n steps.
 template <class K>
 Run runOn(const std::string& kase_path, const std::string& outdir, bool extents, int lanes, long long n) {
-    solver::SolverCase kase = solver::loadSolverCase(kase_path);
-    solver::RunOptions o;
-    o.case_path = kase_path;
-    o.outdir = outdir;
-    o.quiet = true;
-    o.save_h5 = false;
-    o.nsteps = n;
-    o.pair_lanes = lanes;
-    o.row_extents = extents;
-    solver::applyOverrides(o, kase.params);
     std::string why;
-    std::ostringstream log;
-    solver::Simulation sim(kase, o, K::make(why), log);
-    Run r;
-    const solver::RunSummary s = sim.run();
-    r.hash = s.state_hash;
-    r.time = s.physical_time;
-    r.state = sim.finalState();
-    return r;
+    const test::SolverRun s = test::runOn(K::make(why), kase_path, outdir, [&](solver::RunOptions& o) {
+        o.nsteps = n;
+        o.pair_lanes = lanes;
+        o.row_extents = extents;
+    });
+    return Run{s.summary.state_hash, s.state, s.summary.physical_time};
 }
 
 template <class K>
