@@ -229,8 +229,9 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
         extents);
 }
 
-/// The rows in reach of one particle (forEachRowInReach), kept for all the blocks it visits
-/// (the host's path): row k has linear cells [c0[k], c1[k]) and the row frame (x, py[k], pz[k]).
+/// The rows in reach of one particle (forEachRowInReach), kept for all the blocks it visits, or
+/// built per block with row extents (the host's path): row k has linear cells [c0[k], c1[k])
+/// and the row frame (x, py[k], pz[k]).
 struct RowTable {
     static constexpr int kCap = 256;  ///< rows at most; a larger search box: `full` (not built)
     int n = 0;
