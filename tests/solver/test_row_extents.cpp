@@ -48,6 +48,7 @@ struct Run {
     std::string hash;
     solver::HostState state;
     double time = 0;
+    std::string options;  ///< the summary's physics line
 };
 
 /// One run on a backend of kind K: `extents` on or off, `lanes` pair lanes (0: auto), n steps.
@@ -59,7 +60,7 @@ Run runOn(const std::string& kase_path, const std::string& outdir, bool extents,
         o.pair_lanes = lanes;
         o.row_extents = extents;
     });
-    return Run{s.summary.state_hash, s.state, s.summary.physical_time};
+    return Run{s.summary.state_hash, s.state, s.summary.physical_time, s.summary.options};
 }
 
 template <class K>
@@ -67,6 +68,8 @@ void check(const std::string& kase, const std::string& dir, const std::string& w
     const Run on1 = runOn<K>(kase, dir + "/on1", true, 1, n), off1 = runOn<K>(kase, dir + "/off1", false, 1, n);
     EXPECT_GT(on1.time, 0.0) << what;
     EXPECT_EQ(on1.hash, off1.hash) << what << ": one lane, extents on and off";
+    EXPECT_NE(on1.options.find("rows bounded by their particles' extent"), std::string::npos) << on1.options;
+    EXPECT_EQ(off1.options.find("extent"), std::string::npos) << off1.options;
     const Run on = runOn<K>(kase, dir + "/on", true, 0, n), off = runOn<K>(kase, dir + "/off", false, 0, n);
     EXPECT_NE(on.hash, off.hash) << what << ": auto lanes, the candidates of each lane change";
     double maxdiff = 0;
