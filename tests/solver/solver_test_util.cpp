@@ -81,6 +81,11 @@ std::string generateCase(const std::string& dir, const std::string& name, const 
     return generateCaseFile(dir, name, def, dp);
 }
 
+std::string pistonCase(const std::string& dir, const char* file, const std::string& params) {
+    const std::string xml = readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/" + file);
+    return generateCase(dir, "piston", replaceOnce(xml, "<!--PARAMETERS-->", params));
+}
+
 SolverRun runOn(std::unique_ptr<solver::Backend> backend, const std::string& case_path, const std::string& outdir,
                 const std::function<void(solver::RunOptions&)>& tweak,
                 const solver::Simulation::OutputObserver& observe) {

@@ -31,6 +31,9 @@ std::size_t brokenSlots(const solver::HostState& st);
 /// dir/NAME (the path seaspring takes). Fails the test (throws) when gencase fails.
 std::string generateCase(const std::string& dir, const std::string& name, const std::string& def_xml,
                          double dp = 0);
+/// One of the piston tanks of tests/data/phases (`file`, e.g. PistonTank2D_Def.xml) with
+/// `params` in place of its <!--PARAMETERS--> mark, generated as dir/piston.
+std::string pistonCase(const std::string& dir, const char* file, const std::string& params);
 /// Same for an existing definition file.
 std::string generateCaseFile(const std::string& dir, const std::string& name, const std::string& def_path,
                              double dp = 0);

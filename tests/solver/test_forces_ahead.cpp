@@ -76,16 +76,12 @@ void expectSameBits(const std::string& kase, const std::string& dir, const std::
                 (unsigned long long)on.divides, (unsigned long long)on.sorts, on.outputs, on.state_hash.c_str());
 }
 
-std::string pistonCase(const std::string& dir, const char* file, const std::string& params) {
-    const std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/" + file);
-    return test::generateCase(dir, "piston", test::replaceOnce(xml, "<!--PARAMETERS-->", params));
-}
 
 }  // namespace
 
 TYPED_TEST(ForcesAhead, VerletSpsWithAMovingPiston) {
     const std::string dir = test::scratch("ahead_verlet_sps");
-    const std::string kase = pistonCase(
+    const std::string kase = test::pistonCase(
         dir, "PistonTank2D_Def.xml",
         R"(<parameter key="StepAlgorithm" value="1" /><parameter key="VerletSteps" value="40" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)");
     expectSameBits<TypeParam>(kase, dir, "Verlet, laminar+SPS, piston", [](solver::RunOptions& o) { o.nsteps = 600;
@@ -95,7 +91,7 @@ TYPED_TEST(ForcesAhead, VerletSpsWithAMovingPiston) {
 
 TYPED_TEST(ForcesAhead, SymplecticMdbc) {
     const std::string dir = test::scratch("ahead_sym_mdbc");
-    const std::string kase = pistonCase(
+    const std::string kase = test::pistonCase(
         dir, "PistonTankMdbc2D_Def.xml",
         R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value="2" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
     expectSameBits<TypeParam>(kase, dir, "symplectic, mDBC slip 2, piston", [](solver::RunOptions& o) { o.nsteps = 500;
@@ -130,7 +126,7 @@ TYPED_TEST(ForcesAhead, VcpmGateWithGauges) {
 // divide() then computeForces() on a twin backend.
 TYPED_TEST(ForcesAhead, NothingChangesTheStateUntilComputeForces) {
     const std::string dir = test::scratch("ahead_contract");
-    const std::string kase = pistonCase(
+    const std::string kase = test::pistonCase(
         dir, "PistonTank2D_Def.xml",
         R"(<parameter key="StepAlgorithm" value="1" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)");
     const solver::SolverCase c = solver::loadSolverCase(kase);

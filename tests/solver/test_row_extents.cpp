@@ -95,22 +95,16 @@ TYPED_TEST(RowExtents, DamBreak3DOnALatticeCentredGrid) {
 
 TYPED_TEST(RowExtents, PistonTank2DLaminarSps) {
     const std::string dir = test::scratch("extents_piston_sps");
-    const std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTank2D_Def.xml");
-    const std::string kase = test::generateCase(
-        dir, "piston",
-        test::replaceOnce(
-            xml, "<!--PARAMETERS-->",
-            R"(<parameter key="StepAlgorithm" value="1" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)"));
+    const std::string kase = test::pistonCase(
+        dir, "PistonTank2D_Def.xml",
+        R"(<parameter key="StepAlgorithm" value="1" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="2" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="1" />)");
     check<TypeParam>(kase, dir, "2D piston tank, Verlet, laminar+SPS", 200);
 }
 
 TYPED_TEST(RowExtents, PistonTank2DSymplecticMdbc) {
     const std::string dir = test::scratch("extents_piston_mdbc");
-    const std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTankMdbc2D_Def.xml");
-    const std::string kase = test::generateCase(
-        dir, "piston",
-        test::replaceOnce(
-            xml, "<!--PARAMETERS-->",
-            R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value="2" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)"));
+    const std::string kase = test::pistonCase(
+        dir, "PistonTankMdbc2D_Def.xml",
+        R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value="2" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
     check<TypeParam>(kase, dir, "2D piston tank, symplectic, mDBC slip 2", 200);
 }
