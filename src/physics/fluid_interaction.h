@@ -184,7 +184,7 @@ struct PairBatch {
 /// (forEachCandidateRow), candidates numbered from 0 in the block: kCompact (the host), every
 /// lane's partial at once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0].
 template <class Opt, bool kBound, bool kCompact, bool kMask = false>
-SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const RowExtent* extents, const Float4& psa,
+SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
                                            const FluidConstants& c, const CellGrid& g, std::uint32_t lane,
@@ -205,7 +205,7 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
     if (rows != nullptr && !rows->full)
         rows->forEachCandidateRow(psa, cell_start, row);
     else
-        forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, row, extents);
+        forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, row);
     if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
 }
 
@@ -223,24 +223,19 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     SymTensor taua{0, 0, 0, 0, 0, 0};
     if (Opt::sps) taua = in.tau[i];
     struct NoRows {};
-    // The host: the rows once per block (once for both without extents).
-    std::conditional_t<kCompact, RowTable, NoRows> rows;
+    std::conditional_t<kCompact, RowTable, NoRows> rows;  // the host: the rows once, for both blocks
     const RowTable* rt = nullptr;
     if constexpr (kCompact) {
-        rows.template build<Opt::dim>(psa, c, g, in.extent_fluid);
+        rows.template build<Opt::dim>(psa, c, g);
         rt = &rows;
     } else {
         (void)rows;
     }
-    fluidPairsInBlock<Opt, false, kCompact, kMask>(in.cell_start_fluid, in.extent_fluid, psa, va, ovrhoa, pressa, taua,
-                                                   in, c, g, lane, lanes, acc, rt);
-    if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0) {
-        if constexpr (kCompact) {
-            if (in.extent_bound != in.extent_fluid) rows.template build<Opt::dim>(psa, c, g, in.extent_bound);
-        }
-        fluidPairsInBlock<Opt, true, kCompact, kMask>(in.cell_start_bound, in.extent_bound, psa, va, ovrhoa, pressa,
-                                                      taua, in, c, g, lane, lanes, acc, rt);
-    }
+    fluidPairsInBlock<Opt, false, kCompact, kMask>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+                                                   lanes, acc, rt);
+    if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
+        fluidPairsInBlock<Opt, true, kCompact, kMask>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g,
+                                                      lane, lanes, acc, rt);
 }
 
 /// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane;
@@ -374,7 +369,7 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                 for (int k = 0; k < n; ++k) boundPair<Opt>(idx[k], bx[k], by[k], bz[k], br[k], va, in, c, ar, visc);
             }
         }
-    }, in.extent_fluid);
+    });
     ar_out = ar;
     visc_out = visc;
 }

@@ -33,10 +33,6 @@ struct InteractionInputs {
     /// mDBC SlipMode 2/3 (null otherwise): per boundary particle, the velocity its viscous
     /// terms use (the tangential ghost velocity, mdbc.h); its velrho keeps the wall's.
     const Float4* bound_visc_vel = nullptr;
-    /// Per row of cells (y + ncy z), the extent of each block's particles in it (neighbour_rows.h:
-    /// the rows in reach and their spans follow from it); null: from the cells alone.
-    const RowExtent* extent_fluid = nullptr;
-    const RowExtent* extent_bound = nullptr;
 };
 
 /// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.

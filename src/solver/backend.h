@@ -61,8 +61,6 @@ struct BackendSetup {
     /// Pair lanes of the fluid loop (physics/fluid_interaction.h; resolvePairLanes): a power of
     /// two <= physics::kMaxPairLanes.
     std::uint32_t pair_lanes = 1;
-    /// The pair loops bound their rows by the particles' extent (RunOptions::row_extents).
-    bool row_extents = false;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
 };
 

@@ -79,8 +79,6 @@ public:
         cs_fluid_.resize(nc + 1);
         assignFrom(near_, std::vector<std::uint8_t>(nc, 0));
         near_tmp_.resize(nc);
-        if (s.row_extents) extents_.resize(2 * std::size_t(s.grid.ncy) * std::size_t(s.grid.ncz));
-        else extents_ = Buf<physics::RowExtent>();
         assignFrom(moving_pos0_, s.moving_pos0);
         assignFrom(moving_object_, s.moving_object);
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
@@ -386,10 +384,6 @@ private:
         a.in.press_ovrho = a.v.press_ovrho;
         a.in.near = near_.data();
         a.in.bound_visc_vel = mdbc_visc_vel_.empty() ? nullptr : mdbc_visc_vel_.data();
-        if (!extents_.empty()) {
-            a.in.extent_fluid = extents_.data();
-            a.in.extent_bound = extents_.data() + std::size_t(setup_.grid.ncy) * std::size_t(setup_.grid.ncz);
-        }
         a.c = setup_.fluid;
         a.g = setup_.grid;
         a.nbound = nbound_;
@@ -400,22 +394,11 @@ private:
     }
 
     /// The pressure pass; with mDBC, in the same launch, the boundary particles' densities (and
-    /// velocities) from their ghost nodes first. The rows' extents (-rowextents) beside the
-    /// pressures, or in a launch of their own with mDBC.
+    /// velocities) from their ghost nodes first.
     void pressures(const ForceArgs& a) {
         if (!setup_.mdbc.enabled) {
-            if (extents_.empty()) {
-                exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, setup_.fluid});
-            } else {
-                const RowExtentsPass rows = rowExtentsPass(a);
-                exec_.template forEachIndependent<LaunchPressureRows, LaunchPressureRows>(
-                    0u, a.np, PressurePass{a.v, setup_.fluid}, 0u, 2u * rows.nrows * rows.lanes, rows);
-            }
+            exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, setup_.fluid});
             return;
-        }
-        if (!extents_.empty()) {
-            const RowExtentsPass rows = rowExtentsPass(a);
-            exec_.template forEach<LaunchDefault>(0u, 2u * rows.nrows * rows.lanes, rows);
         }
         physics::MdbcInputs in;
         in.normal0 = mdbc_normal0_.data();
@@ -439,19 +422,6 @@ private:
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::mdbcAndPressure(exec_, setup_.mdbc.slip, a, in,
                                                                            setup_.mdbc.constants);
         });
-    }
-
-    /// The extents of the rows of both blocks (RowExtentsPass): a warp per row on the GPU.
-    RowExtentsPass rowExtentsPass(const ForceArgs& a) {
-        constexpr std::uint32_t kShift = Exec::kCompactPairs ? 0u : 5u;
-        return RowExtentsPass{a.in.poscell,
-                              a.in.cell_start_fluid,
-                              a.in.cell_start_bound,
-                              std::uint32_t(setup_.grid.ncx),
-                              std::uint32_t(setup_.grid.ncy) * std::uint32_t(setup_.grid.ncz),
-                              1u << kShift,
-                              kShift,
-                              extents_.data()};
     }
 
     /// The hydrodynamic force on boundary particles slot[0..n) (null: the block [0, n)).
@@ -502,9 +472,6 @@ private:
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
-    /// -rowextents: per row of cells, the fluid block's extents, then the boundary block's
-    /// (RowExtentsPass, at every force evaluation).
-    Buf<physics::RowExtent> extents_;
     std::vector<std::uint32_t> ids_host_;  ///< downloadIdOrder: the ids in sorted order
     std::vector<unsigned char> stage_;     ///< downloadIdOrder: one field in sorted order
     Buf<physics::Double3> moving_pos0_;

@@ -13,12 +13,6 @@ struct LaunchDefault {
     static constexpr int kGpuThreads = 256;
     static constexpr int kCpuChunk = 0;
 };
-/// The pressure pass beside the rows' extents (solver/engine.h; one launch on the GPU, one
-/// parallel region on the CPU, which needs dynamic schedules).
-struct LaunchPressureRows {
-    static constexpr int kGpuThreads = 256;
-    static constexpr int kCpuChunk = 2048;
-};
 /// The fluid particles' pair loops (uneven work per particle).
 struct LaunchFluidPairs {
     static constexpr int kGpuThreads = 128;

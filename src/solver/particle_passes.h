@@ -8,7 +8,6 @@
 
 #include <cstdint>
 
-#include "core/lane_group.h"
 #include "physics/blowup_bounds.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_pair_terms.h"
@@ -188,32 +187,6 @@ struct PressurePass {
     physics::ParticleView v;
     physics::FluidConstants c;
     SEASPRING_HD void operator()(std::uint32_t i) const { physics::pressureAt(i, v, c); }
-};
-
-/// The extent of every row of cells (physics/neighbour_rows.h) of the fluid block, rows [0,
-/// nrows), and of the boundary block, rows [nrows, 2 nrows), into out[]. Index k is share k mod
-/// `lanes` of row k / lanes (lanes = 2^lane_shift, <= 32; the GPU's share a warp and join their
-/// shares across it, the host takes a row per call, lanes 1): the same extent either way.
-struct RowExtentsPass {
-    const physics::Float4* poscell;
-    const std::uint32_t* cs_fluid;
-    const std::uint32_t* cs_bound;
-    std::uint32_t ncx, nrows, lanes, lane_shift;
-    physics::RowExtent* out;
-    SEASPRING_HD void operator()(std::uint32_t k) const {
-        const std::uint32_t lane = k & (lanes - 1u), r = k >> lane_shift;
-        const bool bound = r >= nrows;
-        const std::uint32_t* cs = bound ? cs_bound : cs_fluid;
-        const std::uint32_t first = (bound ? r - nrows : r) * ncx;
-        physics::RowExtent e = physics::rowExtentOf(poscell, cs[first] + lane, cs[first + ncx], lanes);
-        e = combineAcrossLanes(e, lanes, Join{});
-        if (lane == 0u) out[r] = physics::canonicalRowExtent(e);
-    }
-    struct Join {
-        SEASPRING_HD physics::RowExtent operator()(const physics::RowExtent& a, const physics::RowExtent& b) const {
-            return physics::joinRowExtents(a, b);
-        }
-    };
 };
 
 /// Value pass of the dt reduction (combined with DtMaximaCombine: max, exact in any order);

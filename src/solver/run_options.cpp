@@ -111,7 +111,6 @@ void declareOptions(CLI::App& app) {
     value("--cellmode");
     value("--skin");
     value("--pairlanes");
-    value("--rowextents");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
     value("--vcpmdtcoef");
@@ -262,8 +261,6 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             o.pair_lanes = int(toInteger(g, 0, physics::kMaxPairLanes, " (pair lanes: 1, 2, 4 or 8; 0: auto)"));
             if ((o.pair_lanes & (o.pair_lanes - 1)) != 0)
                 usageError(g.arg + ": " + g.value + " is not a power of two (pair lanes: 1, 2, 4 or 8; 0: auto)");
-        } else if (name == "rowextents") {
-            o.row_extents = toInteger(g, 0, 1, " (0: rows bounded by their cells, 1: by their particles)") != 0;
         } else if (name == "vcpmsubsteps") {
             o.solid_substeps = int(toInteger(g, 0, 1000000));
         } else if (name == "vcpmcoupling") {
@@ -404,14 +401,6 @@ Run control:
                        below 98,304, else 1. Results
                        depend on it at rounding level, so hashes compare runs of the
                        same lanes
-  -rowextents:0|1      1: the pair loops visit only the rows of cells, and the cells
-                       of a row, that the extent of the row's particles (computed at
-                       every force evaluation) puts in reach; 0 (default): those the
-                       cells put in reach. The same neighbours in the same order:
-                       results differ only in how pair lanes share the candidates.
-                       Faster while the fluid keeps its initial lattice (about 5% on
-                       the GPU, 13% on the CPU), slower in a disordered flow (10% on
-                       the GPU) and on small 2D cases
   -vcpmsubsteps:N      VCPM solids: N >= 1 solid sub-steps per fluid step instead of
                        int(dt_F/dt_S)+1 (convergence studies; 0: automatic). The solid
                        is unstable when dt_F/N exceeds its stability limit

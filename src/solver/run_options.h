@@ -42,11 +42,6 @@ struct RunOptions {
     /// -pairlanes:N: pair lanes of the fluid loop, a power of two 1..physics::kMaxPairLanes
     /// (physics/fluid_interaction.h); 0 (auto): resolvePairLanes.
     int pair_lanes = 0;
-    /// -rowextents:0|1: the pair loops bound the rows of cells they visit by the extent of the
-    /// particles in them (physics/neighbour_rows.h; default off: docs/performance-large.md has
-    /// where it pays). The same neighbours in the same order either way: results differ only
-    /// where pair lanes number the candidates.
-    bool row_extents = false;
     int solid_substeps = 0;  ///< -vcpmsubsteps:N: solid sub-steps per fluid step forced to N (0: automatic)
     std::optional<int> vcpm_coupling;  ///< -vcpmcoupling:1|2
     std::optional<double> vcpm_dt_coef;  ///< -vcpmdtcoef:F (VcpmDtCoef), 0 < F <= 2

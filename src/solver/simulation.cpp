@@ -34,8 +34,7 @@ std::string fmt(const char* f, double v) {
 const char* kernelName(int k) { return k == 1 ? "cubic spline" : "Wendland C2"; }
 }  // namespace
 
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes,
-                            bool row_extents) {
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes) {
     std::ostringstream s;
     s << dim << "D, " << (p.step_algorithm == 2 ? "symplectic" : "Verlet");
     if (p.step_algorithm == 1) s << " (Euler every " << p.verlet_steps << ")";
@@ -53,7 +52,6 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     else s << ", DBC";
     s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
     if (skin > 0) s << " with a skin of " << skin << " cell";
-    if (row_extents) s << ", rows bounded by their particles' extent";
     if (pair_lanes > 1) s << ", " << pair_lanes << " pair lanes";
     return s.str();
 }
@@ -221,7 +219,6 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
     setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o), o.pair_lanes);
-    setup_.row_extents = o.row_extents;
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
@@ -245,8 +242,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
     sum_.options =
-        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes,
-                        setup_.row_extents);
+        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (setup_.grid_centred) {

@@ -175,9 +175,8 @@ private:
 /// restart file lies in OUTDIR, as OUTDIR/restart.h5 written by -checkpoint does.
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir);
 
-/// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ..."),
-/// with the neighbour search's: cells, skin, row extents (-rowextents) and pair lanes.
+/// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
 std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin,
-                            std::uint32_t pair_lanes = 1, bool row_extents = false);
+                            std::uint32_t pair_lanes = 1);
 
 }  // namespace seaspring::solver

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -93,19 +92,8 @@ namespace {
 /// With `skin` > 0 every particle is then moved by up to the skin (along each axis, most of
 /// them nearly that far) and keeps the cell it was sorted into (posCellInCell), as between two
 /// sorts of a run: the rows must still hold every neighbour.
-/// The extents of the rows of a sorted block (as solver's RowExtentsPass forms them).
-std::vector<RowExtent> rowExtents(const CellGrid& g, const std::vector<Float4>& ps,
-                                  const std::vector<std::uint32_t>& cs) {
-    std::vector<RowExtent> e(std::size_t(g.ncy) * std::size_t(g.ncz));
-    for (std::size_t r = 0; r < e.size(); ++r)
-        e[r] = canonicalRowExtent(rowExtentOf(ps.data(), cs[r * g.ncx], cs[(r + 1) * g.ncx], 1u));
-    return e;
-}
-
-/// `extents`: the rows bounded by their particles' extent (RowExtentsPass's): the same
-/// neighbours in the same order, among no more candidates than the cells alone give.
 template <int kDim>
-void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0, bool extents = false) {
+void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
     const double h = 0.03;
     CellGrid g;
     ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.4, kDim == 3 ? 0.25 : 0.0, 0.3, h, div, g, skin));
@@ -138,26 +126,17 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0, bool exte
         ++cs[cell[order[k]] + 1];
     }
     for (std::uint32_t k = 0; k < nc; ++k) cs[k + 1] += cs[k];
-    const std::vector<RowExtent> ext = rowExtents(g, ps, cs);
-    long long pairs = 0, candidates = 0, candidates_cells = 0;
+    long long pairs = 0;
     for (std::uint32_t a = 0; a < n; ++a) {
         const Float4 psa = ps[a];
         std::vector<std::uint32_t> seen, found;
-        forEachCandidateRow<kDim>(
-            psa, cs.data(), c, g,
-            [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
-                for (std::uint32_t j = pb; j < pe; ++j) {
-                    seen.push_back(j);
-                    float dx, dy, dz;
-                    if (isNeighbour(pairOffset<kDim>(par, ps[j], cax, g, dx, dy, dz), c)) found.push_back(j);
-                }
-            },
-            extents ? ext.data() : nullptr);
-        if (extents)
-            forEachCandidateRow<kDim>(psa, cs.data(), c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4&, int) {
-                candidates_cells += pe - pb;
-            });
-        candidates += static_cast<long long>(seen.size());
+        forEachCandidateRow<kDim>(psa, cs.data(), c, g, [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
+            for (std::uint32_t j = pb; j < pe; ++j) {
+                seen.push_back(j);
+                float dx, dy, dz;
+                if (isNeighbour(pairOffset<kDim>(par, ps[j], cax, g, dx, dy, dz), c)) found.push_back(j);
+            }
+        });
         ASSERT_TRUE(std::is_sorted(seen.begin(), seen.end()) &&
                     std::adjacent_find(seen.begin(), seen.end()) == seen.end())
             << "candidates out of order, particle " << a;
@@ -177,9 +156,6 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0, bool exte
         ASSERT_LT(seen.size(), std::size_t(n));  // the rows leave most particles out
     }
     EXPECT_GT(pairs, 10LL * n) << kDim << "D, cells of 2h/" << div;
-    if (extents) {
-        EXPECT_LE(candidates, candidates_cells) << kDim << "D, cells of 2h/" << div;
-    }
 }
 
 }  // namespace
@@ -199,100 +175,6 @@ TEST(CellSearch, CandidateRowsHoldEveryNeighbourOfParticlesMovedWithinTheSkin) {
             checkCandidateRows<2>(div, rng, skin);
             checkCandidateRows<3>(div, rng, skin);
         }
-}
-
-TEST(CellSearch, RowsBoundedByTheirExtentHoldEveryNeighbourInSortedOrder) {
-    std::mt19937 rng(11);
-    for (int div : {1, 2, 3, 4})
-        for (double skin : {0.0, 0.05, kMaxSkinFraction}) {
-            checkCandidateRows<2>(div, rng, skin, true);
-            checkCandidateRows<3>(div, rng, skin, true);
-        }
-}
-
-/// A row's extent formed in shares (every lanes-th particle, as the GPU's warp) and joined in
-/// the butterfly's order equals the extent formed in one pass, bit for bit, signed zeros and
-/// NaN offsets included; an empty row's extent puts it out of reach.
-TEST(CellSearch, RowExtentsJoinedFromSharesEqualTheWholeRow) {
-    std::mt19937 rng(13);
-    std::uniform_real_distribution<float> u(-0.1f, 1.1f);
-    std::vector<Float4> p(203);
-    for (std::size_t k = 0; k < p.size(); ++k) p[k] = Float4{u(rng), u(rng), u(rng), 0.f};
-    for (Float4& q : p)
-        if (q.y <= 0.f) q.y = 0.5f;
-    p[5].y = -0.f;  // the least y, twice: a -0 and a +0 must give the same bits
-    p[9].y = 0.f;
-    p[17].z = std::nanf("");
-    const RowExtent whole = canonicalRowExtent(rowExtentOf(p.data(), 0, std::uint32_t(p.size()), 1u));
-    EXPECT_EQ(whole.ylo, 0.f);
-    EXPECT_FALSE(std::signbit(whole.ylo));
-    EXPECT_FALSE(std::isnan(whole.zlo) || std::isnan(whole.zhi));
-    // Shares of 2 to 32 lanes, and rows shorter than the lanes (empty shares: a GPU warp over a
-    // row of few particles).
-    for (std::uint32_t n : {std::uint32_t(p.size()), 20u, 1u}) {
-        const RowExtent row = canonicalRowExtent(rowExtentOf(p.data(), 0, n, 1u));
-        for (std::uint32_t lanes : {2u, 8u, 32u}) {
-            std::vector<RowExtent> share(lanes);
-            for (std::uint32_t l = 0; l < lanes; ++l) share[l] = rowExtentOf(p.data(), l, n, lanes);
-            for (std::uint32_t w = 1; w < lanes; w <<= 1)
-                for (std::uint32_t l = 0; l < lanes; l += 2 * w) share[l] = joinRowExtents(share[l], share[l + w]);
-            const RowExtent joined = canonicalRowExtent(share[0]);
-            EXPECT_EQ(std::memcmp(&joined, &row, sizeof(RowExtent)), 0) << n << " particles, " << lanes << " lanes";
-        }
-    }
-    // An empty row: no cell of it is in reach, whatever the point.
-    const RowExtent none = canonicalRowExtent(rowExtentOf(p.data(), 4, 4, 1u));
-    CellGrid g;
-    ASSERT_TRUE(makeCellGrid(0, 0, 0, 1, 1, 1, 0.05, 2, g));
-    const float gy = rowExtentGap(0.01f, none.ylo, none.yhi, 0.f), gz = rowExtentGap(0.01f, none.zlo, none.zhi, 0.f);
-    int x0, x1;
-    EXPECT_FALSE(rowSpanInExtent(g, 3, 0.01f, gy * gy + gz * gz, 0.01f, 0.f, none.xlo, none.xhi, x0, x1));
-}
-
-/// SPHERIC Test 2's search on its lattice: h = 2 dp, cells of h/2 = dp, the grid half a spacing
-/// off the lattice (solver/grid_origin.h). Bounded by their cells, an interior particle's rows
-/// hold 461 candidates in 69 rows for its 256 neighbours; bounded by their extents (the
-/// particles of a row on one line, at the middle of their cells), 257 in 49: the sphere's own
-/// rows and spans.
-TEST(CellSearch, RowExtentsOnALatticeGiveTheSphereOwnRowsAndSpans) {
-    const double dp = 0.01, h = 2 * dp;
-    const int m = 15;  // lattice points per axis
-    CellGrid g;
-    ASSERT_TRUE(makeCellGrid(-0.5 * dp, -0.5 * dp, -0.5 * dp, (m - 0.5) * dp, (m - 0.5) * dp, (m - 0.5) * dp, h, 4, g));
-    FluidConstants c;
-    c.ker.kernelsize2 = float((2.0 * h) * (2.0 * h));
-    std::vector<Float4> ps;
-    std::vector<std::uint32_t> cell;
-    for (int z = 0; z < m; ++z)
-        for (int y = 0; y < m; ++y)
-            for (int x = 0; x < m; ++x) {
-                std::uint32_t lc;
-                ps.push_back(makePosCell(g, Double3{x * dp, y * dp, z * dp}, lc));
-                cell.push_back(lc);
-            }
-    ASSERT_TRUE(std::is_sorted(cell.begin(), cell.end()));  // x fastest: already cell-sorted
-    std::vector<std::uint32_t> cs(g.cellCount() + 1, 0);
-    for (std::uint32_t lc : cell) ++cs[lc + 1];
-    for (std::uint32_t k = 0; k < g.cellCount(); ++k) cs[k + 1] += cs[k];
-    const std::vector<RowExtent> ext = rowExtents(g, ps, cs);
-    const std::uint32_t a = std::uint32_t((7 * m + 7) * m + 7);  // the centre
-    for (const RowExtent* e : {static_cast<const RowExtent*>(nullptr), ext.data()}) {
-        int rows = 0, candidates = 0, neighbours = 0;
-        forEachCandidateRow<3>(
-            ps[a], cs.data(), c, g,
-            [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
-                ++rows;
-                for (std::uint32_t j = pb; j < pe; ++j) {
-                    ++candidates;
-                    float dx, dy, dz;
-                    neighbours += isNeighbour(pairOffset<3>(par, ps[j], cax, g, dx, dy, dz), c) ? 1 : 0;
-                }
-            },
-            e);
-        EXPECT_EQ(neighbours, 256);
-        EXPECT_EQ(rows, e ? 49 : 69);
-        EXPECT_EQ(candidates, e ? 257 : 461);
-    }
 }
 
 TEST(CellSearch, APositionOutsideTheSkinOfItsCellAsksForASort) {

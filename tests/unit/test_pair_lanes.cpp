@@ -39,10 +39,8 @@ struct Scene {
     std::vector<Float2> press_ovrho;
     std::vector<SymTensor> tau;
     std::vector<std::uint32_t> cs_bound, cs_fluid;
-    std::vector<RowExtent> extent_bound, extent_fluid;  ///< per row of cells (as the solver's RowExtentsPass)
 
-    /// `extents`: the rows bounded by their particles' extent (-rowextents).
-    InteractionInputs inputs(bool extents = false) const {
+    InteractionInputs inputs() const {
         InteractionInputs in;
         in.poscell = poscell.data();
         in.velrho = velrho.data();
@@ -50,10 +48,6 @@ struct Scene {
         in.cell_start_fluid = cs_fluid.data();
         in.tau = tau.data();
         in.press_ovrho = press_ovrho.data();
-        if (extents) {
-            in.extent_bound = extent_bound.data();
-            in.extent_fluid = extent_fluid.data();
-        }
         return in;
     }
 };
@@ -106,12 +100,6 @@ Scene makeScene(int dim, int cell_div, std::mt19937& rng, std::uint32_t density 
     s.velrho.resize(np);
     block(s.nb, true, 0, s.cs_bound);
     block(s.nf, false, s.nb, s.cs_fluid);
-    const std::size_t rows = std::size_t(s.g.ncy) * std::size_t(s.g.ncz);
-    for (auto [cs, ext] : {std::pair{&s.cs_bound, &s.extent_bound}, std::pair{&s.cs_fluid, &s.extent_fluid}}) {
-        ext->resize(rows);
-        for (std::size_t r = 0; r < rows; ++r)
-            (*ext)[r] = canonicalRowExtent(rowExtentOf(s.poscell.data(), (*cs)[r * s.g.ncx], (*cs)[(r + 1) * s.g.ncx], 1u));
-    }
     s.press_ovrho.resize(np);
     s.tau.resize(np);
     for (std::uint32_t i = 0; i < np; ++i) {
@@ -168,27 +156,21 @@ std::uint32_t longestRow(const Scene& s) {
     return most;
 }
 
-/// `extents`: the rows bounded by their particles' extent (-rowextents), which changes the
-/// candidates each lane takes but, with one lane, no bit.
 template <class Opt>
-void checkLanes(int cell_div, std::uint32_t seed, std::uint32_t density = 1, bool extents = false) {
+void checkLanes(int cell_div, std::uint32_t seed, std::uint32_t density = 1) {
     std::mt19937 rng(seed);
     Scene s = makeScene(Opt::dim, cell_div, rng, density);
     if (Opt::visco != Viscosity::Artificial) {
         s.c.visco = 1e-3f;  // a laminar nu that matters against the pressure terms
         s.c.visco_bound = 7e-4f;
     }
-    const InteractionInputs in = s.inputs(extents);
-    const InteractionInputs cells = s.inputs(false);
+    const InteractionInputs in = s.inputs();
     double worst = 0;       // largest lane-count difference, relative to the sum of |terms| scale
     double scale_sum = 0;
     long long wall_pairs = 0;
     for (std::uint32_t i = s.nb; i < s.nb + s.nf; ++i) {
         const FluidAccum one = fluidParticleForces<Opt, true>(i, in, s.c, s.g, 1);
         ASSERT_TRUE(sameAccum<Opt>(one, fluidParticleForces<Opt, false>(i, in, s.c, s.g, 1))) << "particle " << i;
-        if (extents) {  // one lane: the bits of the rows bounded by their cells
-            ASSERT_TRUE(sameAccum<Opt>(one, fluidParticleForces<Opt, true>(i, cells, s.c, s.g, 1))) << "particle " << i;
-        }
         // The GPU's masked rows (fluidPairsInRowMasked, the laminar families' path): the direct
         // walk's bits, lane by lane.
         for (std::uint32_t lanes : {1u, 2u, 4u, 8u})
@@ -242,12 +224,6 @@ TEST(PairLanes, MaskedRowsKeepTheDirectWalksBitsOnRowsLongerThanAMask) {
     std::mt19937 rng(15);
     EXPECT_GT(longestRow<2>(makeScene(2, 1, rng, 4)), 64u);
     checkLanes<Opt>(1, 15, 4);
-}
-
-TEST(PairLanes, RowsBoundedByTheirExtentKeepTheHostAndTheGpuPathsEqual) {
-    checkLanes<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 2>>(2, 21, 1, true);
-    checkLanes<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::Fourtakas, 3>>(4, 22, 1, true);
-    checkLanes<FluidOptions<WendlandKernel, Viscosity::LaminarSps, DensityDiffusion::Fourtakas, 3>>(3, 23, 1, true);
 }
 
 TEST(PairLanes, CombineLanesIsThePairwiseTree) {

@@ -102,9 +102,6 @@ TEST(RunOptions, RunControl) {
     EXPECT_EQ(parseWith({}).pair_lanes, 0);
     EXPECT_EQ(parseWith({"-pairlanes:1"}).pair_lanes, 1);
     EXPECT_EQ(parseWith({"-pairlanes:8"}).pair_lanes, 8);
-    EXPECT_FALSE(parseWith({}).row_extents);
-    EXPECT_FALSE(parseWith({"-rowextents:0"}).row_extents);
-    EXPECT_TRUE(parseWith({"-rowextents:1"}).row_extents);
     EXPECT_EQ(parseWith({"-progress:0"}).progress_interval, 0.0);
     EXPECT_EQ(parseWith({"-progress:2.5"}).progress_interval, 2.5);
     EXPECT_TRUE(parseWith({"-quiet"}).quiet);
@@ -230,8 +227,6 @@ TEST(RunOptions, UnknownAndMalformedOptions) {
     expectError({"-skin:-1"}, "-skin:-1: -1 must be >= 0");
     expectError({"-pairlanes:3"}, "-pairlanes:3: 3 is not a power of two (pair lanes: 1, 2, 4 or 8; 0: auto)");
     expectError({"-pairlanes:16"}, "-pairlanes:16: 16 must be 0..8 (pair lanes: 1, 2, 4 or 8; 0: auto)");
-    expectError({"-rowextents:2"},
-                "-rowextents:2: 2 must be 0..1 (0: rows bounded by their cells, 1: by their particles)");
     expectError({"-symplectic:1"}, "-symplectic:1: -symplectic takes no value");
     expectError({"-quiet:yes"}, "-quiet:yes: -quiet takes no value");
     expectError({"-cfl"}, "-cfl: needs a value (-cfl:VALUE)");
