@@ -23,7 +23,9 @@ struct FluidConstants {
     float visco = 0;        ///< alpha (artificial) or nu (laminar) for fluid neighbours
     float visco_bound = 0;  ///< the same times ViscoBoundFactor, for boundary neighbours
     float ddtkh = 0;        ///< delta * 2h
-    float ddtgz = 0;        ///< -rhop0 g_z / B
+    /// Fourtakas' rhoH_ab as a cubic in z_a - z_b, from ddtgz = -rhop0 g_z / B
+    /// (density_diffusion.h).
+    HydrostaticCubic ddt_hyd;
     float sps_smag = 0;     ///< SPS constants (makeSpsConstants)
     float sps_blin = 0;
     int dt_all_particles = 0;  ///< DtAllParticles: boundary velocities enter the dt criterion
@@ -67,7 +69,7 @@ inline FluidConstants makeFluidConstants(const FluidInputs& in) {
     f.visco_bound = float(in.visco * in.laminar_scale * in.visco_bound_factor);
     f.ddtkh = float(in.ddt_value * 2.0 * h);
     // rhoH_ab = rho_b^H - rho_a^H needs +rho0|g|/B for gravity along -z (see density_diffusion.h).
-    f.ddtgz = float(-rho0 * in.gravity_z / in.b);
+    f.ddt_hyd = makeHydrostaticCubic(-rho0 * in.gravity_z / in.b, rho0);
     const SpsConstants sps = makeSpsConstants(in.dp, in.dim);
     f.sps_smag = sps.smag;
     f.sps_blin = sps.blin;

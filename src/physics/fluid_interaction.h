@@ -95,7 +95,7 @@ struct PairBatch {
     std::uint8_t ln[kCap];
     float bx[kCap], by[kCap], bz[kCap], br[kCap];
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
-    float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kCap], tar[kCap], tdelta[kCap], tvisc[kCap];
+    float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kCap], tarv[kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
     float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
     float tgxx[kSps ? kCap : 1], tgxy[kSps ? kCap : 1], tgxz[kSps ? kCap : 1], tgyy[kSps ? kCap : 1],
         tgyz[kSps ? kCap : 1], tgzz[kSps ? kCap : 1];
@@ -113,8 +113,10 @@ struct PairBatch {
             tmy[q] = t.my;
             tmz[q] = t.mz;
             tcf[q] = t.cf;
-            tar[q] = t.ar;
-            tdelta[q] = t.delta;
+            tarv[q] = t.ar.v;
+            tarw[q] = t.ar.w;
+            tdv[q] = t.delta.v;
+            tdw[q] = t.delta.w;
             tvisc[q] = t.visc;
             if constexpr (kLaminar) {
                 tcv[q] = t.cv;
@@ -133,8 +135,8 @@ struct PairBatch {
             t.my = tmy[q];
             t.mz = tmz[q];
             t.cf = tcf[q];
-            t.ar = tar[q];
-            t.delta = tdelta[q];
+            t.ar = ProductTerm{tarv[q], tarw[q]};
+            t.delta = ProductTerm{tdv[q], tdw[q]};
             t.visc = tvisc[q];
             if constexpr (kLaminar) {
                 t.cv = tcv[q];

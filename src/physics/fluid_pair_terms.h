@@ -62,8 +62,8 @@ struct PairTerms {
     float cf;
     float cv;              ///< coefficient of v_ab in dv_a/dt (laminar viscosity)
     float dvx, dvy, dvz;   ///< v_ab (laminar)
-    float ar;              ///< continuity term of d(rho_a)/dt
-    float delta;           ///< density diffusion term
+    ProductTerm ar;        ///< continuity term of d(rho_a)/dt (summed as ProductTerm::addTo)
+    ProductTerm delta;     ///< density diffusion term (likewise)
     float visc;            ///< viscous dt measure v_ab.r_ab / (r^2 + eta2)
     SymTensor gv;          ///< SPS velocity-gradient terms
 };
@@ -87,17 +87,17 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     float ov_r2eta, ov_rhosum;
     pairReciprocals(rr2, c.eta2, va.w, vb.w, ov_r2eta, ov_rhosum);
 
-    // Pressure.
+    // Pressure (its coefficient of grad W, -m_b prs, is formed below with the artificial
+    // viscosity's).
     float prs = (pressa + pressb) * (ovrhoa * ovrhob);
     if (K::kType == KernelType::Cubic)
         prs += CubicKernel::tensileCorrection(rr2, pressa, va.w, pressb, vb.w, c.ker);
-    t.cf = -prs * massb;
 
     // Continuity: v_ab . grad W = fac (v_ab . r_ab).
     const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
     const float dvdr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
     const float dot_vf = fac * dvdr;
-    t.ar = dot_vf * (ovrhob * (massb * va.w));  // massb * rho_a: per particle
+    t.ar = ProductTerm{dot_vf, ovrhob * (massb * va.w)};  // massb * rho_a: per particle
 
     // Viscous time-step measure and viscosity: against an mDBC SlipMode 2/3 boundary particle,
     // its viscous velocity (DualSPHysics' tangenvel), the wall's in the continuity term above.
@@ -113,8 +113,10 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const float dot3 = fac * rr2;  // r . grad W = fac |r|^2
     t.visc = viscDtPair(dot_vr, ov_r2eta);
     if (Opt::visco == Viscosity::Artificial) {
-        t.cf -= artificialViscosityFactor(t.visc, ov_rhosum, massb, visco, c.cs0, c.ker.h);
+        // -m_b prs - s in one fused multiply-add.
+        t.cf = fma32(-prs, massb, -artificialViscosityFactor(t.visc, ov_rhosum, massb, visco, c.cs0, c.ker.h));
     } else {
+        t.cf = -prs * massb;
         t.cv = laminarViscosityFactor(dot3, ov_r2eta, ov_rhosum, massb, visco);
         t.dvx = wvx;
         t.dvy = wvy;
@@ -146,12 +148,11 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
 
     // Density diffusion (DensityDT 1 and 2 are switched off by any boundary neighbour:
     // addPairTerms).
-    t.delta = 0.f;
+    t.delta = ProductTerm{};
     if (!kBound && Opt::ddt == DensityDiffusion::Molteni)
         t.delta = ddtMolteniPair(va.w, ovrhob, ov_r2eta, dot3, massb, c.ddtkh, c.cs0);
     if (!kBound && (Opt::ddt == DensityDiffusion::Fourtakas || Opt::ddt == DensityDiffusion::FourtakasFull))
-        t.delta = ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh, c.cs0, c.ddtgz,
-                                   c.rhop0);
+        t.delta = ddtFourtakasPair(va.w, vb.w, ovrhob, drz, ov_r2eta, dot3, massb, c.ddtkh, c.cs0, c.ddt_hyd);
     return t;
 }
 
@@ -180,9 +181,9 @@ SEASPRING_HD inline void addPairTerms(FluidAccum& acc, const PairTerms& t) {
         acc.gradvel.xx += t.gv.xx; acc.gradvel.xy += t.gv.xy; acc.gradvel.xz += t.gv.xz;
         acc.gradvel.yy += t.gv.yy; acc.gradvel.yz += t.gv.yz; acc.gradvel.zz += t.gv.zz;
     }
-    acc.ar += t.ar;
+    acc.ar = t.ar.addTo(acc.ar);
     acc.visc = maxf(acc.visc, t.visc);
-    if (!kBound) acc.delta += t.delta;
+    if (!kBound) acc.delta = t.delta.addTo(acc.delta);
     if (kBound && (Opt::ddt == DensityDiffusion::Molteni || Opt::ddt == DensityDiffusion::Fourtakas))
         acc.ddt_off = true;
 }

@@ -52,8 +52,8 @@ SEASPRING_HD inline float artificialViscosityFactor(float visc_dt, float ov_rhos
 /// s = m_b 4 nu (r.grad W)/((r^2+eta2)(rho_a+rho_b)).
 SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_r2eta, float ov_rhosum,
                                                  float mass_b, float nu) {
-    const float temp = (4.f * nu * ov_r2eta) * ov_rhosum;
-    return mass_b * temp * dot_rgradw;
+    const float k = (4.f * nu) * mass_b;  // per particle (hoisted out of the pair loop)
+    return ((k * ov_r2eta) * ov_rhosum) * dot_rgradw;
 }
 
 /// One pair's terms of the velocity-gradient sums that SPS needs (DualSPHysics' layout: xy

@@ -50,7 +50,7 @@ template <class Opt>
 double diffusionAtTheMinimum(double dp, double hdp, double delta, double a) {
     FluidConstants c = makeConstants(dp, hdp, 2, 0.0);
     c.ddtkh = float(delta * 2.0 * hdp * dp);
-    c.ddtgz = 0.f;  // no gravity: no hydrostatic part
+    c.ddt_hyd = HydrostaticCubic{};  // no gravity: no hydrostatic part
     const int n = int(std::ceil(2.0 * hdp));
     std::vector<Float4> velrho;
     std::vector<Float2> press;

@@ -101,13 +101,19 @@ TEST(Eos, TaitHandValues) {
     EXPECT_NEAR(taitB(30.0, 1000.0, 7.0), 900.0 * 1000.0 / 7.0, 1e-9);
 }
 
-TEST(Ddt, SeventhRootMinusOne) {
+TEST(Ddt, HydrostaticCubicIsTheSeventhRoot) {
+    // rhoH = rho0 ((1 + ddtgz dz)^(1/7) - 1) over |e| = |ddtgz dz| <= 0.03 (30 times the
+    // hydrostatic range over 2h), for rho0 = 1000 and ddtgz = 7 g / c0^2 at c0 = 20.
+    const double rho0 = 1000, ddtgz = 7.0 * 9.81 / 400.0;
+    const HydrostaticCubic k = makeHydrostaticCubic(ddtgz, rho0);
     for (double e = -0.03; e <= 0.03; e += 0.0005) {
-        const double ref = std::pow(1.0 + double(float(e)), 1.0 / 7.0) - 1.0;
-        // Relative to the result: no cancellation near e = 0.
-        EXPECT_NEAR(seventhRootMinusOne(float(e)), ref, 3e-7 * std::fabs(ref) + 2.5e-8) << e;
+        const float dz = float(e / ddtgz);
+        const double ref = rho0 * (std::pow(1.0 + ddtgz * double(dz), 1.0 / 7.0) - 1.0);
+        // Relative to the result: no cancellation near dz = 0; the series' first omitted term,
+        // (65/2401) e^4 rho0, is below 2.2e-5 here.
+        EXPECT_NEAR(hydrostaticDensityDifference(dz, k), ref, 3e-7 * std::fabs(ref) + 2.5e-5) << e;
     }
-    EXPECT_EQ(seventhRootMinusOne(0.f), 0.f);
+    EXPECT_EQ(hydrostaticDensityDifference(0.f, k), 0.f);
 }
 
 TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
@@ -117,8 +123,8 @@ TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
     const double za = 0.1, zb = za + dz, depth = 0.5;
     const double rho_a = hydrostaticDensity(rho0, b, 7, g, depth - za);
     const double rho_b = hydrostaticDensity(rho0, b, 7, g, depth - zb);
-    const float ddtgz = float(rho0 * g / b);  // -rho0 g_z / B with g_z = -g
-    const float dh = hydrostaticDensityDifference(float(za - zb), ddtgz, float(rho0));
+    const HydrostaticCubic hyd = makeHydrostaticCubic(rho0 * g / b, rho0);  // -rho0 g_z / B, g_z = -g
+    const float dh = hydrostaticDensityDifference(float(za - zb), hyd);
     // Exact: rho0 ((1 + rho0 g dz / B)^(1/7) - 1) with sign from gz.
     const double exact = rho0 * (std::pow(1.0 + rho0 * g * (za - zb) / b, 1.0 / 7.0) - 1.0);
     EXPECT_NEAR(dh, exact, 1e-5 * std::fabs(exact));
@@ -128,10 +134,10 @@ TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
     const float ov_r2eta = 1.f / (float(dz * dz) + 1e-6f);
     const float term = ddtFourtakasPair(float(rho_a), float(rho_b), 1.f / float(rho_b), float(za - zb),
                                         ov_r2eta, -1000.f * float(dz * dz), 0.008f, 0.0069f,
-                                        float(c0), ddtgz, float(rho0));
+                                        float(c0), hyd).value();
     const float molteni_scale = std::fabs(ddtMolteniPair(float(rho_a), 1.f / float(rho_b), ov_r2eta,
                                                          -1000.f * float(dz * dz), 0.008f, 0.0069f,
-                                                         float(c0)));
+                                                         float(c0)).value());
     EXPECT_LT(std::fabs(term), 0.05f * molteni_scale);
 }
 
@@ -218,7 +224,10 @@ TEST(FluidConstants, HandValues) {
     EXPECT_FLOAT_EQ(c.visco, 0.1f);
     EXPECT_FLOAT_EQ(c.visco_bound, 0.2f);                  // x ViscoBoundFactor
     EXPECT_FLOAT_EQ(c.ddtkh, 0.004f);                      // delta 2h
-    EXPECT_FLOAT_EQ(c.ddtgz, float(1000.0 * 9.81 * 7.0 / 900000.0));  // -rho0 g_z / B
+    // rhoH's cubic from ddtgz = -rho0 g_z / B: c1 = rho0 ddtgz / 7, c2 = -3/49 rho0 ddtgz^2.
+    const double ddtgz = 1000.0 * 9.81 * 7.0 / 900000.0;
+    EXPECT_FLOAT_EQ(c.ddt_hyd.c1, float(1000.0 * ddtgz / 7.0));
+    EXPECT_FLOAT_EQ(c.ddt_hyd.c2, float(-1000.0 * ddtgz * ddtgz * 3.0 / 49.0));
     EXPECT_EQ(c.dt_all_particles, 1);
     // Kernel and SPS constants: the physics/ functions of the same inputs, bit for bit.
     const KernelConstants k = makeKernelConstants(0.02, 0.01, 3);
