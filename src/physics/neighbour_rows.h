@@ -84,6 +84,32 @@ SEASPRING_HD_INLINE bool rowCells(const SearchBox& b, const Float4& psa, int y, 
     return true;
 }
 
+/// Slack of rowsAlongY, in cells: far above the rounding of rowCells' test.
+constexpr float kRowsAlongYSlack = 1e-3f;
+
+/// The y cells [y0, y1] of the rows at z gap `gz` (cellGap) that rowCells can accept: a row
+/// further along y has a gap gy > sqrt(r^2 - gz^2) + margin + kRowsAlongYSlack cells, which
+/// rowCells rejects, so testing only these rows visits exactly the rows it accepts (the same
+/// rows, candidates and order: no result changes, pair lanes included). False when no row at
+/// this z is in reach (rowCells would reject them all: gy^2 + gz^2 >= gz^2 > r^2). 2D: the
+/// one row y = 0 when gz is in reach.
+template <int kDim>
+SEASPRING_HD_INLINE bool rowsAlongY(const SearchBox& b, const Float4& psa, float gz, const FluidConstants& c,
+                                    const CellGrid& g, int& y0, int& y1) {
+    const float rem = c.ker.kernelsize2 - gz * gz;
+    if (rem < 0.f) return false;
+    y0 = b.y0;
+    y1 = b.y1;
+    if (kDim == 3) {
+        const float dy = sqrtf(rem) + fma32(kRowsAlongYSlack, g.cellsizef, b.margin);
+        const int k0 = int(floorf((psa.y - dy) * g.ovcellsizef));
+        const int k1 = int(floorf((psa.y + dy) * g.ovcellsizef));
+        y0 = maxi(y0, b.cay + k0);
+        y1 = mini(y1, b.cay + k1);
+    }
+    return y0 <= y1;
+}
+
 /// The rows of cells around `psa`'s cell that can hold a neighbour of it (by z then y,
 /// ascending), whatever the block: fn(c0, c1, par, cax) for each row in reach, [c0, c1) its
 /// linear cells (rowCells), `par` = psa's rowFrame for that row and `cax` = psa's cell in x (the
@@ -96,7 +122,9 @@ SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstan
     for (int z = box.z0; z <= box.z1; ++z) {
         const float rowdz = g.cellsizef * float(box.caz - z);
         const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
-        for (int y = box.y0; y <= box.y1; ++y) {
+        int ylo, yhi;
+        if (!rowsAlongY<kDim>(box, psa, gz, c, g, ylo, yhi)) continue;
+        for (int y = ylo; y <= yhi; ++y) {
             std::uint32_t c0, c1;
             if (!rowCells<kDim>(box, psa, y, z, gz, c, g, c0, c1)) continue;
             const float rowdy = g.cellsizef * float(box.cay - y);

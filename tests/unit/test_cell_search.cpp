@@ -5,7 +5,8 @@
 ///        2D and 3D, with and without a skin: a particle may skip a block only where it holds
 ///        nothing; building one block's bit keeps the other's.
 ///        The candidate rows of forEachCandidateRow against a brute-force pair scan: every
-///        neighbour is among them, visited in sorted order.
+///        neighbour is among them, visited in sorted order; and the rows walked (rowsAlongY
+///        bounding each z's rows) are exactly those rowCells accepts over the whole search box.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -137,6 +138,23 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
                 if (isNeighbour(pairOffset<kDim>(par, ps[j], cax, g, dx, dy, dz), c)) found.push_back(j);
             }
         });
+        // The rows walked are the rows of the search box that rowCells accepts, in order.
+        std::vector<std::uint32_t> walked, accepted;
+        forEachRowInReach<kDim>(psa, c, g, [&](std::uint32_t c0, std::uint32_t c1, const Float4&, int) {
+            walked.push_back(c0);
+            walked.push_back(c1);
+        });
+        const SearchBox box = searchBox<kDim>(psa, g);
+        for (int z = box.z0; z <= box.z1; ++z) {
+            const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+            for (int y = box.y0; y <= box.y1; ++y) {
+                std::uint32_t c0, c1;
+                if (!rowCells<kDim>(box, psa, y, z, gz, c, g, c0, c1)) continue;
+                accepted.push_back(c0);
+                accepted.push_back(c1);
+            }
+        }
+        ASSERT_EQ(walked, accepted) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
         ASSERT_TRUE(std::is_sorted(seen.begin(), seen.end()) &&
                     std::adjacent_find(seen.begin(), seen.end()) == seen.end())
             << "candidates out of order, particle " << a;
