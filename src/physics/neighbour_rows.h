@@ -87,10 +87,11 @@ SEASPRING_HD_INLINE bool rowCells(const SearchBox& b, const Float4& psa, int y, 
 /// Slack of rowsAlongY, in cells: far above the rounding of rowCells' test.
 constexpr float kRowsAlongYSlack = 1e-3f;
 
-/// The y cells [y0, y1] of the rows at z gap `gz` (cellGap) that rowCells can accept: a row
-/// further along y has a gap gy > sqrt(r^2 - gz^2) + margin + kRowsAlongYSlack cells, which
-/// rowCells rejects, so testing only these rows visits exactly the rows it accepts (the same
-/// rows, candidates and order: no result changes, pair lanes included). False when no row at
+/// The y cells [y0, y1] of the rows at z gap `gz` (cellGap) that rowCells can accept: the
+/// nearest face of a row further along y lies more than sqrt(r^2 - gz^2) + the margin +
+/// kRowsAlongYSlack cells away, so its gap exceeds what rowCells accepts by the slack, and
+/// rowCells would reject it. Testing only these rows visits exactly the rows rowCells accepts
+/// (the same rows, candidates and order: no result changes, pair lanes included). False when no row at
 /// this z is in reach (rowCells would reject them all: gy^2 + gz^2 >= gz^2 > r^2). 2D: the
 /// one row y = 0 when gz is in reach.
 template <int kDim>
