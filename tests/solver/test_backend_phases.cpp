@@ -34,6 +34,29 @@ using test::Cpu3;
 using test::Gpu;
 using test::GpuBondLanes;
 
+/// Element k of a and b as hexadecimal bytes, for a failure message.
+template <typename T>
+std::string bytesAt(const std::vector<T>& a, const std::vector<T>& b, std::size_t k) {
+    std::ostringstream s;
+    auto hex = [&](const T& v) {
+        const unsigned char* p = reinterpret_cast<const unsigned char*>(&v);
+        for (std::size_t q = 0; q < sizeof(T); ++q) s << "0123456789abcdef"[p[q] >> 4] << "0123456789abcdef"[p[q] & 15];
+    };
+    s << "element " << k << ": ";
+    hex(a[k]);
+    s << " vs ";
+    hex(b[k]);
+    return s.str();
+}
+
+/// The first element where a and b differ byte for byte (a.size() when none; sizes equal).
+template <typename T>
+std::size_t firstDifference(const std::vector<T>& a, const std::vector<T>& b) {
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (std::memcmp(&a[k], &b[k], sizeof(T)) != 0) return k;
+    return a.size();
+}
+
 template <typename T>
 bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
@@ -52,7 +75,10 @@ void expectSameFields(Backend& ref, Backend& b, const std::string& phase, unsign
     auto compare = [&](const char* name, const auto& u, const auto& v) {
         if (!sameBytes(u, v)) {
             ++differing;
-            ADD_FAILURE() << phase << ": field '" << name << "' differs from the 1-thread OpenMP backend";
+            const std::size_t k = u.size() == v.size() ? firstDifference(u, v) : u.size();
+            ADD_FAILURE() << phase << ": field '" << name << "' differs from the 1-thread OpenMP backend"
+                          << (k < u.size() ? " (first at " + bytesAt(u, v, k) + ", of " + std::to_string(u.size()) + ")"
+                                           : std::string(" (sizes differ)"));
         }
     };
     using namespace ::seaspring::physics;  // the flag names of the field table
@@ -65,7 +91,9 @@ void expectSameFields(Backend& ref, Backend& b, const std::string& phase, unsign
 }
 
 void expectSameMaxima(const physics::DtMaxima& a, const physics::DtMaxima& b, const std::string& phase) {
-    EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << phase << ": dt maxima differ";
+    EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0)
+        << phase << ": dt maxima differ: ace2, vel2, visc " << std::hexfloat << a.ace2 << ", " << a.vel2 << ", "
+        << a.visc << " vs " << b.ace2 << ", " << b.vel2 << ", " << b.visc;
     EXPECT_GT(a.vel2 + a.ace2, 0.f) << phase << ": the maxima are trivially zero";
 }
 
