@@ -167,8 +167,7 @@ TYPED_TEST_SUITE(BackendPhases, Kinds);
 
 /// A 2D tank with a moving piston (tests/solver/test_solver_parity.cpp's case).
 std::string pistonTank(const std::string& dir, const std::string& params) {
-    const std::string xml = test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTank2D_Def.xml");
-    return test::generateCase(dir, "piston", test::replaceOnce(xml, "<!--PARAMETERS-->", params));
+    return test::pistonCase(dir, "PistonTank2D_Def.xml", params);
 }
 
 /// Symplectic steps (predictor, divide keeping the step start, corrector, motion, divide),
@@ -225,14 +224,10 @@ TYPED_TEST(BackendPhases, SymplecticStepWithMovingBoundary2D) {
 TYPED_TEST(BackendPhases, SymplecticStepsMdbc2D) {
     for (const char* slip : {"1", "2", "3"}) {
         const std::string dir = test::scratch(std::string("phases_mdbc2d_") + slip);
-        const std::string xml =
-            test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTankMdbc2D_Def.xml");
-        const std::string kase = test::generateCase(
-            dir, "piston_mdbc",
-            test::replaceOnce(xml, "<!--PARAMETERS-->",
-                              std::string(R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value=")") +
-                                  slip +
-                                  R"(" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)"));
+        const std::string kase = test::pistonCase(
+            dir, "PistonTankMdbc2D_Def.xml",
+            std::string(R"(<parameter key="Boundary" value="2" /><parameter key="SlipMode" value=")") + slip +
+                R"(" /><parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
         Pair<TypeParam> p(kase, 0);
         ASSERT_TRUE(p.ok) << p.skip_reason;
         symplecticSteps(p, 3, std::string("2D symplectic mDBC slip ") + slip);

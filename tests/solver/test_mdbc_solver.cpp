@@ -165,13 +165,10 @@ TEST(MdbcSolver, ThreadCountsGiveIdenticalHashesEachSlipMode) {
     const char* const variants[] = {kDbc, kMdbc1, kMdbc2, kMdbc3};
     for (const char* const& params : variants) {
         const std::string dir = scratch("parity" + std::to_string(&params - variants));
-        const std::string xml =
-            test::readFile(std::string(SEASPRING_TEST_DATA_DIR) + "/phases/PistonTankMdbc2D_Def.xml");
-        const std::string kase = test::generateCase(
-            dir, "piston",
-            test::replaceOnce(xml, "<!--PARAMETERS-->",
-                              std::string(params) +
-                                  R"(<parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)"));
+        const std::string kase = test::pistonCase(
+            dir, "PistonTankMdbc2D_Def.xml",
+            std::string(params) +
+                R"(<parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="3" /><parameter key="Visco" value="1e-6" /><parameter key="DensityDT" value="3" />)");
         auto steps = [](solver::RunOptions& o) { o.nsteps = 60; };
         const auto r1 = test::runCpu(kase, dir + "/out1", 1, steps);
         const auto r2 = test::runCpu(kase, dir + "/out2", 2, steps);
