@@ -97,8 +97,9 @@ struct PairBatch {
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
     float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kCap], tarv[kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
     float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
-    float tgxx[kSps ? kCap : 1], tgxy[kSps ? kCap : 1], tgxz[kSps ? kCap : 1], tgyy[kSps ? kCap : 1],
-        tgyz[kSps ? kCap : 1], tgzz[kSps ? kCap : 1];
+    float tsxx[kSps ? kCap : 1], tsxy[kSps ? kCap : 1], tsxz[kSps ? kCap : 1], tsyy[kSps ? kCap : 1],
+        tsyz[kSps ? kCap : 1], tszz[kSps ? kCap : 1];
+    float tux[kSps ? kCap : 1], tuy[kSps ? kCap : 1], tuz[kSps ? kCap : 1];
     int m = 0;
 
     SEASPRING_HD void flush(const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
@@ -125,8 +126,9 @@ struct PairBatch {
                 tdvz[q] = t.dvz;
             }
             if constexpr (kSps) {
-                tgxx[q] = t.gv.xx; tgxy[q] = t.gv.xy; tgxz[q] = t.gv.xz;
-                tgyy[q] = t.gv.yy; tgyz[q] = t.gv.yz; tgzz[q] = t.gv.zz;
+                tsxx[q] = t.st.xx; tsxy[q] = t.st.xy; tsxz[q] = t.st.xz;
+                tsyy[q] = t.st.yy; tsyz[q] = t.st.yz; tszz[q] = t.st.zz;
+                tux[q] = t.gv.ux; tuy[q] = t.gv.uy; tuz[q] = t.gv.uz;
             }
         }
         for (int q = 0; q < n; ++q) {  // in candidate order
@@ -145,7 +147,8 @@ struct PairBatch {
                 t.dvz = tdvz[q];
             }
             if constexpr (kSps) {
-                t.gv = SymTensor{tgxx[q], tgxy[q], tgxz[q], tgyy[q], tgyz[q], tgzz[q]};
+                t.st = SymTensor{tsxx[q], tsxy[q], tsxz[q], tsyy[q], tsyz[q], tszz[q]};
+                t.gv = VelocityGradientTerm{tux[q], tuy[q], tuz[q]};
             }
             addPairTerms<Opt, kBound>(acc[ln[q]], t);
         }

@@ -53,11 +53,10 @@ struct FluidAccum {
 
 /// What pair (a, b) adds to fluid particle a, before it is summed (addPairTerms).
 struct PairTerms {
-    /// The vector that cf multiplies in dv_a/dt. Without SPS r_ab, cf holding the coefficient
-    /// of grad W_ab (pressure, artificial viscosity) times the kernel's gradient factor F
-    /// (grad W_ab = F r_ab): one product per pair instead of grad W's three. With SPS
-    /// ((tau_a + tau_b) - P I) . grad W_ab, the pressure P = (p_a + p_b)/(rho_a rho_b) joined to
-    /// the stress's diagonal, and cf = m_b.
+    /// Without SPS: r_ab, and cf the coefficient of grad W_ab (pressure, artificial viscosity)
+    /// times the kernel's gradient factor F (grad W_ab = F r_ab): one product per pair instead
+    /// of grad W's three; dv_a/dt gets cf m. With SPS: f = m_b grad W_ab, which the stress st
+    /// multiplies (addStressTerm) and the velocity-gradient term's u (cf unused).
     float mx, my, mz;
     float cf;
     float cv;              ///< coefficient of v_ab in dv_a/dt (laminar viscosity)
@@ -65,7 +64,8 @@ struct PairTerms {
     ProductTerm ar;        ///< continuity term of d(rho_a)/dt (summed as ProductTerm::addTo)
     ProductTerm delta;     ///< density diffusion term (likewise)
     float visc;            ///< viscous dt measure v_ab.r_ab / (r^2 + eta2)
-    SymTensor gv;          ///< SPS velocity-gradient terms
+    SymTensor st;          ///< SPS: (tau_a + tau_b) - P I, P = (p_a + p_b)/(rho_a rho_b)
+    VelocityGradientTerm gv;  ///< SPS velocity-gradient term (its f is m above)
 };
 
 /// The terms of pair (a, b): b = j at offset (drx, dry, drz) from a, rr2 = r^2, inside the
@@ -84,8 +84,8 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     const Float4 vb = in.velrho[j];
     const Float2 pb2 = in.press_ovrho[j];
     const float pressb = pb2.x, ovrhob = pb2.y;
-    float ov_r2eta, ov_rhosum;
-    pairReciprocals(rr2, c.eta2, va.w, vb.w, ov_r2eta, ov_rhosum);
+    const PairReciprocals rec = pairReciprocals(rr2, c.eta2, va.w, vb.w);
+    const float ov_r2eta = rec.ov_r2eta;
 
     // Pressure (its coefficient of grad W, -m_b prs, is formed below with the artificial
     // viscosity's).
@@ -114,29 +114,30 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     t.visc = viscDtPair(dot_vr, ov_r2eta);
     if (Opt::visco == Viscosity::Artificial) {
         // -m_b prs - s in one fused multiply-add.
-        t.cf = fma32(-prs, massb, -artificialViscosityFactor(t.visc, ov_rhosum, massb, visco, c.cs0, c.ker.h));
+        t.cf = fma32(-prs, massb, -artificialViscosityFactor(t.visc, rec.ov_rhosum, massb, visco, c.cs0, c.ker.h));
     } else {
         t.cf = -prs * massb;
-        t.cv = laminarViscosityFactor(dot3, ov_r2eta, ov_rhosum, massb, visco);
+        t.cv = laminarViscosityFactor(dot3, rec.ov_both, massb, visco);
         t.dvx = wvx;
         t.dvy = wvy;
         t.dvz = wvz;
         if (Opt::sps) {
-            const float frx = fac * drx, fry = fac * dry, frz = fac * drz;
+            // f = m_b grad W; m_b ((tau_a + tau_b) - P I) . grad W = st . f (addStressTerm).
+            const float facm = fac * massb;
+            t.mx = facm * drx;
+            t.my = facm * dry;
+            t.mz = facm * drz;
             SymTensor ts = taua;
             if (!kBound) {
                 const SymTensor tb = in.tau[j];
                 ts.xx += tb.xx; ts.xy += tb.xy; ts.xz += tb.xz;
                 ts.yy += tb.yy; ts.yz += tb.yz; ts.zz += tb.zz;
             }
-            // m_b (tau_a + tau_b) . grad W - m_b P grad W = m_b ((tau_a + tau_b) - P I) . grad W.
-            const float txx = ts.xx - prs, tyy = ts.yy - prs, tzz = ts.zz - prs;
-            t.mx = fma32(txx, frx, fma32(ts.xy, fry, ts.xz * frz));
-            t.my = fma32(ts.xy, frx, fma32(tyy, fry, ts.yz * frz));
-            t.mz = fma32(ts.xz, frx, fma32(ts.yz, fry, tzz * frz));
-            t.cf = massb;
-            t.gv = kBound ? SymTensor{0, 0, 0, 0, 0, 0}
-                          : velocityGradientTerms(dvx, dvy, dvz, frx, fry, frz, massb, ovrhob);
+            ts.xx -= prs;
+            ts.yy -= prs;
+            ts.zz -= prs;
+            t.st = ts;
+            t.gv = kBound ? VelocityGradientTerm{} : velocityGradientTerm(dvx, dvy, dvz, ovrhob);
         }
     }
     if (!Opt::sps) {  // cf r_ab with cf = F x the coefficient of grad W
@@ -156,16 +157,21 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
     return t;
 }
 
-/// Adds the acceleration of one pair to (ax, ay, az): cf m (pressure, artificial viscosity, the
-/// SPS stress: PairTerms), + cv v_ab (laminar viscosity); the one source of the
-/// momentum contribution of a pair, for the fluid particle's sum (addPairTerms) and for the
-/// reaction on a boundary particle (hydroForceOnBoundary). Starting from -0.f gives the pair's
-/// acceleration alone, bit for bit: fma32(a, b, -0.f) = round(a b), the sign of zero included.
+/// Adds the acceleration of one pair to (ax, ay, az): cf m (pressure, artificial viscosity) or,
+/// with SPS, the stress term st . f (addStressTerm; f = m), + cv v_ab (laminar viscosity); the one
+/// source of the momentum contribution of a pair, for the fluid particle's sum (addPairTerms)
+/// and for the reaction on a boundary particle (hydroForceOnBoundary). Starting from -0.f gives
+/// the pair's acceleration alone, bit for bit: fma32(a, b, -0.f) = round(a b), the sign of zero
+/// included.
 template <class Opt>
 SEASPRING_HD inline void addPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
-    ax = fma32(t.cf, t.mx, ax);
-    ay = fma32(t.cf, t.my, ay);
-    az = fma32(t.cf, t.mz, az);
+    if (Opt::sps) {
+        addStressTerm(t.st, t.mx, t.my, t.mz, ax, ay, az);
+    } else {
+        ax = fma32(t.cf, t.mx, ax);
+        ay = fma32(t.cf, t.my, ay);
+        az = fma32(t.cf, t.mz, az);
+    }
     if (Opt::visco != Viscosity::Artificial) {
         ax = fma32(t.cv, t.dvx, ax);
         ay = fma32(t.cv, t.dvy, ay);
@@ -177,10 +183,7 @@ SEASPRING_HD inline void addPairAcceleration(const PairTerms& t, float& ax, floa
 template <class Opt, bool kBound>
 SEASPRING_HD inline void addPairTerms(FluidAccum& acc, const PairTerms& t) {
     addPairAcceleration<Opt>(t, acc.ax, acc.ay, acc.az);
-    if (Opt::sps && !kBound) {
-        acc.gradvel.xx += t.gv.xx; acc.gradvel.xy += t.gv.xy; acc.gradvel.xz += t.gv.xz;
-        acc.gradvel.yy += t.gv.yy; acc.gradvel.yz += t.gv.yz; acc.gradvel.zz += t.gv.zz;
-    }
+    if (Opt::sps && !kBound) t.gv.addTo(acc.gradvel, t.mx, t.my, t.mz);
     acc.ar = t.ar.addTo(acc.ar);
     acc.visc = maxf(acc.visc, t.visc);
     if (!kBound) acc.delta = t.delta.addTo(acc.delta);

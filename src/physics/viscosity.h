@@ -24,23 +24,28 @@ enum class Viscosity { Artificial = 1, LaminarSps = 2, Laminar = 3 };
 /// pairs enters the CFL condition); ov_r2eta = 1/(r^2 + eta2).
 SEASPRING_HD inline float viscDtPair(float dot_vr, float ov_r2eta) { return dot_vr * ov_r2eta; }
 
-/// 1/(r^2 + eta2) and 1/(rho_a + rho_b) of a pair from one reciprocal (the pair loop's only
-/// one): D = 1/((r^2 + eta2)(rho_a + rho_b)), through reciprocalNormalRange: the bits of 1.f / x
-/// for any argument of a run with finite positive densities (sph_types.h), without the GPU's
-/// range check.
-SEASPRING_HD inline void pairReciprocals(float rr2, float eta2, float rho_a, float rho_b, float& ov_r2eta,
-                                         float& ov_rhosum) {
+/// The reciprocals of a pair, from one (the pair loop's only one): D = 1/((r^2 + eta2)(rho_a +
+/// rho_b)) through reciprocalNormalRange (the bits of 1.f / x for any argument of a run with
+/// finite positive densities, sph_types.h, without the GPU's range check), 1/(r^2 + eta2) = D
+/// (rho_a + rho_b) and 1/(rho_a + rho_b) = D (r^2 + eta2). Each term takes what it needs (the
+/// rest is never computed): the viscous dt measure and the density diffusion 1/(r^2 + eta2), the
+/// artificial viscosity 1/(rho_a + rho_b), the laminar viscosity D.
+struct PairReciprocals {
+    float ov_r2eta, ov_rhosum, ov_both;
+};
+SEASPRING_HD inline PairReciprocals pairReciprocals(float rr2, float eta2, float rho_a, float rho_b) {
     const float r2eta = rr2 + eta2, rhosum = rho_a + rho_b;
     const float d = reciprocalNormalRange(r2eta * rhosum);
-    ov_r2eta = d * rhosum;
-    ov_rhosum = d * r2eta;
+    return PairReciprocals{d * rhosum, d * r2eta, d};
 }
 
 /// Artificial viscosity: the factor s such that a_a -= s * grad W, i.e. m_b Pi_ab with
 /// Pi_ab = -alpha c0 h (v_ab.r_ab/(r^2+eta2)) / rhobar, rhobar = (rho_a + rho_b)/2; zero when
 /// the pair separates. `visc_dt` = v_ab.r_ab/(r^2+eta2) (viscDtPair), `ov_rhosum` =
 /// 1/(rho_a + rho_b), `alpha` already includes ViscoBoundFactor for boundary neighbours.
-/// Computed for every pair and selected (no branch: SIMD lanes on the host).
+/// Computed for every pair and selected (no branch: SIMD lanes on the host). (Formed from D =
+/// PairReciprocals::ov_both instead, one product less, the SPHERIC benchmark ran 3.5% slower
+/// on an H100: docs/performance-large.md, twentieth session.)
 SEASPRING_HD inline float artificialViscosityFactor(float visc_dt, float ov_rhosum, float mass_b, float alpha,
                                                     float cs0, float h) {
     const float k = (((-2.f * alpha) * cs0) * h) * mass_b;  // per particle (hoisted out of the pair loop)
@@ -49,31 +54,41 @@ SEASPRING_HD inline float artificialViscosityFactor(float visc_dt, float ov_rhos
 }
 
 /// Laminar viscosity (Lo & Shao): the factor s such that a_a += s * v_ab,
-/// s = m_b 4 nu (r.grad W)/((r^2+eta2)(rho_a+rho_b)).
-SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_r2eta, float ov_rhosum,
-                                                 float mass_b, float nu) {
+/// s = m_b 4 nu (r.grad W) D, D = 1/((r^2+eta2)(rho_a+rho_b)) (PairReciprocals::ov_both).
+SEASPRING_HD inline float laminarViscosityFactor(float dot_rgradw, float ov_both, float mass_b, float nu) {
     const float k = (4.f * nu) * mass_b;  // per particle (hoisted out of the pair loop)
-    return ((k * ov_r2eta) * ov_rhosum) * dot_rgradw;
+    return (k * ov_both) * dot_rgradw;
 }
 
 /// One pair's terms of the velocity-gradient sums that SPS needs (DualSPHysics' layout: xy
-/// holds du/dy + dv/dx, and so on): -(m_b/rho_b) v_ab (x) grad W, symmetrised; the particle's
-/// sums add them (addPairTerms). Formed as values, not added into a zero tensor (six additions
-/// of 0 less per pair), the mixed terms with one fused multiply-add each (xy = fma(ux, fry,
-/// uy frx): one rounding less and one instruction less on the GPU, which compiles without
-/// contraction).
-SEASPRING_HD inline SymTensor velocityGradientTerms(float dvx, float dvy, float dvz, float frx, float fry,
-                                                    float frz, float mass_b, float ovrho_b) {
-    const float volp2 = -mass_b * ovrho_b;
-    const float ux = dvx * volp2, uy = dvy * volp2, uz = dvz * volp2;
-    SymTensor g;
-    g.xx = ux * frx;
-    g.xy = fma32(ux, fry, uy * frx);
-    g.xz = fma32(ux, frz, uz * frx);
-    g.yy = uy * fry;
-    g.yz = fma32(uy, frz, uz * fry);
-    g.zz = uz * frz;
-    return g;
+/// holds du/dy + dv/dx, and so on): -(m_b/rho_b) v_ab (x) grad W, symmetrised, kept as its two
+/// factors u = -v_ab/rho_b and f = m_b grad W (the pair's mass-weighted gradient, which the
+/// stress term uses too) and added to the sums as fused multiply-adds (addTo): xx += ux fx,
+/// xy += ux fy + uy fx (two fused multiply-adds), and so on; no product rounded on its own.
+struct VelocityGradientTerm {
+    float ux = 0, uy = 0, uz = 0;
+    SEASPRING_HD void addTo(SymTensor& g, float fx, float fy, float fz) const {
+        g.xx = fma32(ux, fx, g.xx);
+        g.xy = fma32(ux, fy, fma32(uy, fx, g.xy));
+        g.xz = fma32(ux, fz, fma32(uz, fx, g.xz));
+        g.yy = fma32(uy, fy, g.yy);
+        g.yz = fma32(uy, fz, fma32(uz, fy, g.yz));
+        g.zz = fma32(uz, fz, g.zz);
+    }
+};
+SEASPRING_HD inline VelocityGradientTerm velocityGradientTerm(float dvx, float dvy, float dvz, float ovrho_b) {
+    return VelocityGradientTerm{dvx * -ovrho_b, dvy * -ovrho_b, dvz * -ovrho_b};
+}
+
+/// The SPS stress term of a pair, m_b ((tau_a + tau_b) - P I) . grad W = S . f with S the
+/// stress with the pressure P = (p_a + p_b)/(rho_a rho_b) on its diagonal and f = m_b grad W,
+/// added to the acceleration as fused multiply-adds, row by row (the last column first):
+/// a_x = fma(S_xx, f_x, fma(S_xy, f_y, fma(S_xz, f_z, a_x))).
+SEASPRING_HD inline void addStressTerm(const SymTensor& st, float fx, float fy, float fz, float& ax, float& ay,
+                                       float& az) {
+    ax = fma32(st.xx, fx, fma32(st.xy, fy, fma32(st.xz, fz, ax)));
+    ay = fma32(st.xy, fx, fma32(st.yy, fy, fma32(st.yz, fz, ay)));
+    az = fma32(st.xz, fx, fma32(st.yz, fy, fma32(st.zz, fz, az)));
 }
 
 /// SPS stress over density from the velocity gradient sums (DualSPHysics' ComputeSpsTau):

@@ -142,14 +142,23 @@ TEST(Ddt, HydrostaticTermMatchesTaitInverse) {
 }
 
 TEST(Viscosity, ArtificialOnlyWhenApproaching) {
-    float ov, ovsum;
-    pairReciprocals(1e-4f, 4e-6f, 1000.f, 1002.f, ov, ovsum);
-    EXPECT_NEAR(ov, 1.0 / (1e-4 + 4e-6), 1e-6 / (1e-4 + 4e-6));
-    EXPECT_NEAR(ovsum, 1.0 / 2002.0, 1e-6 / 2002.0);
-    EXPECT_EQ(artificialViscosityFactor(viscDtPair(0.1f, ov), ovsum, 0.001f, 0.1f, 30, 0.02f), 0.f);
-    const float s = artificialViscosityFactor(viscDtPair(-0.1f, ov), ovsum, 0.001f, 0.1f, 30, 0.02f);
+    const PairReciprocals r = pairReciprocals(1e-4f, 4e-6f, 1000.f, 1002.f);
+    EXPECT_NEAR(r.ov_r2eta, 1.0 / (1e-4 + 4e-6), 1e-6 / (1e-4 + 4e-6));
+    EXPECT_NEAR(r.ov_rhosum, 1.0 / 2002.0, 1e-6 / 2002.0);
+    EXPECT_NEAR(r.ov_both, 1.0 / ((1e-4 + 4e-6) * 2002.0), 1e-6 / ((1e-4 + 4e-6) * 2002.0));
+    EXPECT_EQ(artificialViscosityFactor(viscDtPair(0.1f, r.ov_r2eta), r.ov_rhosum, 0.001f, 0.1f, 30, 0.02f), 0.f);
+    EXPECT_EQ(artificialViscosityFactor(0.f, r.ov_rhosum, 0.001f, 0.1f, 30, 0.02f), 0.f);
+    const float s = artificialViscosityFactor(viscDtPair(-0.1f, r.ov_r2eta), r.ov_rhosum, 0.001f, 0.1f, 30, 0.02f);
     // Pi = -alpha c0 h (v.r/(r^2+eta2)) / rhobar, times m_b.
     const double ref = (-0.1 * 30 * (0.02 * (-0.1 / (1e-4 + 4e-6))) / 1001.0) * 0.001;
+    EXPECT_NEAR(s, ref, 1e-6 * std::fabs(ref));
+}
+
+TEST(Viscosity, LaminarFactorIsLoAndShao) {
+    // s = m_b 4 nu (r . grad W) / ((r^2 + eta2)(rho_a + rho_b)), from pairReciprocals' D.
+    const PairReciprocals r = pairReciprocals(1e-4f, 4e-6f, 1000.f, 1002.f);
+    const float s = laminarViscosityFactor(-3.5f, r.ov_both, 0.001f, 1e-6f);
+    const double ref = 0.001 * 4e-6 * -3.5 / ((1e-4 + 4e-6) * 2002.0);
     EXPECT_NEAR(s, ref, 1e-6 * std::fabs(ref));
 }
 
@@ -161,13 +170,13 @@ TEST(Viscosity, SpsTauOfPureShear) {
     EXPECT_NEAR(t.xx, -(1e-7 * 4.0) / 1000.0, 1e-13);
 }
 
-// velocityGradientTerms: a pair's terms of the velocity-gradient sums are the symmetrised
-// products u (x) grad W with u = -(m_b/rho_b) v_ab: the diagonal ones a single rounded product,
-// the mixed ones (xy = ux fry + uy frx, ...) one fused multiply-add, so within one rounding of
-// the exact sum of the two products, and the same bits as fma32 of those products (which the
-// host and the GPU compute alike). Checked over random pairs, with exact zeros of both signs
-// a quarter of the time each, against the products in double. Broken on purpose (xy formed as
-// ux fry + uy fry): fails.
+// VelocityGradientTerm: a pair's terms of the velocity-gradient sums are the symmetrised
+// products u (x) f with u = -v_ab/rho_b and f = m_b grad W, added by fused multiply-adds: the
+// diagonal ones one rounding of the sum and the product, the mixed ones (xy += ux fy + uy fx, ...)
+// two, so within two roundings of the exact sum; and the same bits as those fused
+// multiply-adds in that order (which the host and the GPU compute alike). Checked over random
+// pairs added to random sums, with exact zeros of both signs a quarter of the time each, against
+// the products in double. Broken on purpose (xy formed as ux fy + uy fy): fails.
 TEST(Viscosity, VelocityGradientTermsAreTheSymmetrisedProducts) {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<float> u(-2.f, 2.f);
@@ -176,24 +185,55 @@ TEST(Viscosity, VelocityGradientTermsAreTheSymmetrisedProducts) {
         const int k = pick(rng);
         return k == 0 ? 0.f : (k == 1 ? -0.f : u(rng));
     };
-    // |t - (a b + c d)| within one rounding of the result and one of c d (a term that is one fma
-    // rounds c d first): at most 2^-23 (|a b| + |c d|) (0 for exact zeros).
-    auto within = [](float t, double ab, double cd) {
-        return std::fabs(double(t) - (ab + cd)) <= std::ldexp(std::fabs(ab) + std::fabs(cd), -23);
+    // |t - (s + a b + c d)| within one rounding of the result and one of the inner sum
+    // (s + c d): at most 2^-23 (|s| + |a b| + |c d|) (0 for exact zeros).
+    auto within = [](float t, double s, double ab, double cd) {
+        return std::fabs(double(t) - (s + ab + cd)) <= std::ldexp(std::fabs(s) + std::fabs(ab) + std::fabs(cd), -23);
     };
     for (int p = 0; p < 200000; ++p) {
-        const float dvx = value(), dvy = value(), dvz = value(), frx = value(), fry = value(), frz = value();
-        const float mass = 0.5f + 0.5f * std::fabs(u(rng)), ovrho = 1e-3f;
-        const SymTensor t = velocityGradientTerms(dvx, dvy, dvz, frx, fry, frz, mass, ovrho);
-        const float volp2 = -mass * ovrho;  // as the function forms u
-        const double ux = double(dvx * volp2), uy = double(dvy * volp2), uz = double(dvz * volp2);
-        ASSERT_TRUE(within(t.xx, ux * frx, 0.0)) << p;
-        ASSERT_TRUE(within(t.yy, uy * fry, 0.0)) << p;
-        ASSERT_TRUE(within(t.zz, uz * frz, 0.0)) << p;
-        ASSERT_TRUE(within(t.xy, ux * fry, uy * frx)) << p;
-        ASSERT_TRUE(within(t.xz, ux * frz, uz * frx)) << p;
-        ASSERT_TRUE(within(t.yz, uy * frz, uz * fry)) << p;
-        ASSERT_EQ(t.xy, fma32(float(ux), fry, float(uy) * frx)) << p;
+        const float dvx = value(), dvy = value(), dvz = value(), fx = value(), fy = value(), fz = value();
+        const float ovrho = 1e-3f * (0.5f + 0.5f * std::fabs(u(rng)));
+        const VelocityGradientTerm t = velocityGradientTerm(dvx, dvy, dvz, ovrho);
+        ASSERT_EQ(t.ux, dvx * -ovrho) << p;
+        ASSERT_EQ(t.uy, dvy * -ovrho) << p;
+        ASSERT_EQ(t.uz, dvz * -ovrho) << p;
+        const SymTensor s0{value() * 1e-3f, value() * 1e-3f, value() * 1e-3f, value() * 1e-3f, value() * 1e-3f,
+                           value() * 1e-3f};
+        SymTensor g = s0;
+        t.addTo(g, fx, fy, fz);
+        const double ux = t.ux, uy = t.uy, uz = t.uz;
+        ASSERT_TRUE(within(g.xx, s0.xx, ux * fx, 0.0)) << p;
+        ASSERT_TRUE(within(g.yy, s0.yy, uy * fy, 0.0)) << p;
+        ASSERT_TRUE(within(g.zz, s0.zz, uz * fz, 0.0)) << p;
+        ASSERT_TRUE(within(g.xy, s0.xy, ux * fy, uy * fx)) << p;
+        ASSERT_TRUE(within(g.xz, s0.xz, ux * fz, uz * fx)) << p;
+        ASSERT_TRUE(within(g.yz, s0.yz, uy * fz, uz * fy)) << p;
+        ASSERT_EQ(g.xy, fma32(t.ux, fy, fma32(t.uy, fx, s0.xy))) << p;
+    }
+}
+
+// addStressTerm: the SPS stress term st . f added row by row, the last column first, as fused
+// multiply-adds; within three roundings of the exact sum. Broken on purpose (st.xz in the place
+// of st.yz in the y row): fails.
+TEST(Viscosity, StressTermIsTheTensorTimesTheGradient) {
+    std::mt19937 rng(777);
+    std::uniform_real_distribution<float> u(-2.f, 2.f);
+    for (int p = 0; p < 100000; ++p) {
+        const SymTensor st{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)};
+        const float f[3] = {u(rng), u(rng), u(rng)};
+        const float a0[3] = {u(rng), u(rng), u(rng)};
+        float a[3] = {a0[0], a0[1], a0[2]};
+        addStressTerm(st, f[0], f[1], f[2], a[0], a[1], a[2]);
+        const double m[3][3] = {{st.xx, st.xy, st.xz}, {st.xy, st.yy, st.yz}, {st.xz, st.yz, st.zz}};
+        for (int r = 0; r < 3; ++r) {
+            double ex = a0[r], mag = std::fabs(a0[r]);
+            for (int k = 0; k < 3; ++k) {
+                ex += m[r][k] * f[k];
+                mag += std::fabs(m[r][k] * f[k]);
+            }
+            ASSERT_LE(std::fabs(double(a[r]) - ex), std::ldexp(mag, -22)) << p << " row " << r;
+        }
+        ASSERT_EQ(a[0], fma32(st.xx, f[0], fma32(st.xy, f[1], fma32(st.xz, f[2], a0[0])))) << p;
     }
 }
 
@@ -252,12 +292,19 @@ std::uint32_t bitsOf(float f) {
 }
 
 /// The reaction on a boundary particle as it was computed before addPairAcceleration: the plain
-/// products cf m (m: PairTerms), then the fused laminar term.
+/// products cf m (m: PairTerms) or, with SPS, the stress's rows times f with their last products
+/// rounded alone, then the fused laminar term.
 template <class Opt>
 void plainPairAcceleration(const PairTerms& t, float& ax, float& ay, float& az) {
-    ax = t.cf * t.mx;
-    ay = t.cf * t.my;
-    az = t.cf * t.mz;
+    if (Opt::sps) {
+        ax = fma32(t.st.xx, t.mx, fma32(t.st.xy, t.my, t.st.xz * t.mz));
+        ay = fma32(t.st.xy, t.mx, fma32(t.st.yy, t.my, t.st.yz * t.mz));
+        az = fma32(t.st.xz, t.mx, fma32(t.st.yz, t.my, t.st.zz * t.mz));
+    } else {
+        ax = t.cf * t.mx;
+        ay = t.cf * t.my;
+        az = t.cf * t.mz;
+    }
     if (Opt::visco != Viscosity::Artificial) {
         ax = fma32(t.cv, t.dvx, ax);
         ay = fma32(t.cv, t.dvy, ay);
@@ -277,13 +324,14 @@ void checkAccelerationFromMinusZero() {
         auto pick = [&](int k) { return (n >> k) % 7 == 0 ? zeros[(n >> (k + 3)) & 1] : u(rng); };
         t.mx = pick(0), t.my = pick(1), t.mz = pick(2), t.cf = pick(3);
         t.cv = pick(4), t.dvx = pick(5), t.dvy = pick(6), t.dvz = u(rng);
+        t.st = SymTensor{pick(7), pick(8), pick(9), pick(10), pick(11), pick(12)};
         float ax = -0.f, ay = -0.f, az = -0.f, px, py, pz;
         addPairAcceleration<Opt>(t, ax, ay, az);
         plainPairAcceleration<Opt>(t, px, py, pz);
         ASSERT_EQ(bitsOf(ax), bitsOf(px)) << n;
         ASSERT_EQ(bitsOf(ay), bitsOf(py)) << n;
         ASSERT_EQ(bitsOf(az), bitsOf(pz)) << n;
-        zero_products += t.cf * t.mx == 0.f ? 1 : 0;
+        zero_products += (Opt::sps ? t.st.xz * t.mz : t.cf * t.mx) == 0.f ? 1 : 0;
     }
     EXPECT_GT(zero_products, 1000);  // signed zero products were exercised
 }
