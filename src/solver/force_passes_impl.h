@@ -32,11 +32,12 @@ struct FluidForcesPass {
     }
 };
 
-/// The GPU's fluid loop takes each row's neighbours from a bit mask (physics::
-/// fluidPairsInRowMasked) for the laminar families: their pair arithmetic (about 140
+/// The GPU's fluid loop takes each row's neighbours of the fluid block from a bit mask (physics::
+/// fluidPairsInRowMasked) for the laminar families: their pair arithmetic (about 120
 /// instructions with SPS) is large enough for the extra offset per pair to pay where the
 /// threads of a warp find their neighbours at different candidate steps; with artificial
-/// viscosity the direct loop stays (docs/performance-large.md, sixteenth session).
+/// viscosity, and for the boundary block, the direct loop stays (docs/performance-large.md,
+/// sixteenth and twentieth sessions).
 template <class Opt>
 constexpr bool kMaskedRows = Opt::visco != physics::Viscosity::Artificial;
 
