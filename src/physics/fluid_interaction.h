@@ -95,7 +95,7 @@ struct PairBatch {
     std::uint8_t ln[kCap];
     float bx[kCap], by[kCap], bz[kCap], br[kCap];
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
-    float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kCap], tarv[kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
+    float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kSps ? 1 : kCap], tarv[kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
     float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
     float tsxx[kSps ? kCap : 1], tsxy[kSps ? kCap : 1], tsxz[kSps ? kCap : 1], tsyy[kSps ? kCap : 1],
         tsyz[kSps ? kCap : 1], tszz[kSps ? kCap : 1];
@@ -113,7 +113,7 @@ struct PairBatch {
             tmx[q] = t.mx;
             tmy[q] = t.my;
             tmz[q] = t.mz;
-            tcf[q] = t.cf;
+            if constexpr (!kSps) tcf[q] = t.cf;  // with SPS cf is not formed (PairTerms)
             tarv[q] = t.ar.v;
             tarw[q] = t.ar.w;
             tdv[q] = t.delta.v;
@@ -136,7 +136,7 @@ struct PairBatch {
             t.mx = tmx[q];
             t.my = tmy[q];
             t.mz = tmz[q];
-            t.cf = tcf[q];
+            if constexpr (!kSps) t.cf = tcf[q];
             t.ar = ProductTerm{tarv[q], tarw[q]};
             t.delta = ProductTerm{tdv[q], tdw[q]};
             t.visc = tvisc[q];

@@ -56,7 +56,7 @@ struct PairTerms {
     /// Without SPS: r_ab, and cf the coefficient of grad W_ab (pressure, artificial viscosity)
     /// times the kernel's gradient factor F (grad W_ab = F r_ab): one product per pair instead
     /// of grad W's three; dv_a/dt gets cf m. With SPS: f = m_b grad W_ab, which the stress st
-    /// multiplies (addStressTerm) and the velocity-gradient term's u (cf unused).
+    /// multiplies (addStressTerm) and the velocity-gradient term's u (cf not formed).
     float mx, my, mz;
     float cf;
     float cv;              ///< coefficient of v_ab in dv_a/dt (laminar viscosity)
@@ -116,7 +116,7 @@ SEASPRING_HD inline PairTerms fluidPairTerms(std::uint32_t j, float drx, float d
         // -m_b prs - s in one fused multiply-add.
         t.cf = fma32(-prs, massb, -artificialViscosityFactor(t.visc, rec.ov_rhosum, massb, visco, c.cs0, c.ker.h));
     } else {
-        t.cf = -prs * massb;
+        if (!Opt::sps) t.cf = -prs * massb;  // with SPS the pressure joins the stress (st)
         t.cv = laminarViscosityFactor(dot3, rec.ov_both, massb, visco);
         t.dvx = wvx;
         t.dvy = wvy;
