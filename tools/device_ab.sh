@@ -15,12 +15,23 @@
 #        sps  s4 with -viscolamsps:1e-6
 #        l3   FlexStruc Liao 3D as shipped, first 0.02 s: loop seconds (needs LIAO=1 and
 #             build-dev/shared)
+#        db3  DualSPHysics' 3D dam break CaseDambreak_Def.xml at dp 0.004 (about 1.6 M particles,
+#             h = 1.73 dp, as shipped: Verlet, artificial viscosity), DB3STEPS (400) steps
+#        db3l the same at its shipped dp 0.0085 (171 k), first 0.3 s: loop seconds
+#        db3x the same, first 1.0 s (the front has hit the obstacle and the far wall): loop seconds
+#        l2   FlexStruc Liao 2D as shipped (28 k), first 0.1 s: loop seconds (needs LIAO=1)
+#        ant  the Antoci gate 2D (cases/antoci_gate2d, 17 k), first 0.1 s: loop seconds
+# Variants of one build: ARGS_NAME (extra solver options of variant NAME's runs) and BIN_NAME
+# (the build it runs, default NAME), e.g. VARS="third dp" BIN_third=new BIN_dp=new
+# ARGS_third=-cellmode:third ARGS_dp=-cellmode:dp with build-dev/v_new.tar.xz.
 # Env: VARS, CASES (default "s4 s1"), ROUNDS (2), DEADLINE (500 s: no run starts after it),
 #      OUT (ab.csv: case,var,round,value,hash).
 set -u
 export LD_LIBRARY_PATH=$PWD/build-dev/lib
-for v in $VARS; do [[ -f build-dev/v_$v.tar.xz ]] && tar -xJf build-dev/v_$v.tar.xz; done
-first=${VARS%% *}
+binof() { local b="BIN_$1"; echo "${!b:-$1}"; }
+argsof() { local a="ARGS_$1"; echo "${!a:-}"; }
+for v in $VARS; do b=$(binof $v); [[ -f build-dev/v_$b.tar.xz && ! -d vb/$b ]] && tar -xJf build-dev/v_$b.tar.xz; done
+first=$(binof ${VARS%% *})
 W=/tmp/wab; mkdir -p $W
 nvidia-smi --query-gpu=name --format=csv,noheader
 G=vb/$first/gencase
@@ -32,6 +43,15 @@ if [[ -n "${LATE:-}" ]]; then
   LSTEP=$(grep -o "checkpoint t=[0-9.e+-]* s, step [0-9]*" $W/late.log | tail -n 1 | grep -o "[0-9]*$"); echo "late step $LSTEP"
 fi
 if [[ -n "${LIAO:-}" ]]; then [[ -f $W/l3d.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/flexstruc/CaseDambreak3D_FSI_Def.xml $W/l3d >/dev/null 2>&1; fi
+if [[ -n "${LIAO:-}" && " ${CASES:-} " == *" l2 "* && ! -f $W/l2d.h5 ]]; then
+  cp build-dev/shared/dualsphysics-cases/flexstruc/DambreakGateTimeSeries.csv $W/
+  vb/$first/gencase build-dev/shared/dualsphysics-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $W/l2d >/dev/null 2>&1
+fi
+[[ " ${CASES:-} " == *" ant "* && ! -f $W/ant.h5 ]] && vb/$first/gencase cases/antoci_gate2d/AntociGate2D_Def.xml $W/ant >/dev/null 2>&1
+if [[ " ${CASES:-} " == *" db3"* ]]; then
+  [[ -f $W/db3.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreak_Def.xml $W/db3 -dp:0.004 >/dev/null 2>&1
+  [[ -f $W/db3l.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreak_Def.xml $W/db3l >/dev/null 2>&1
+fi
 echo "case,var,round,value,hash" > $OUT/ab.csv
 rec() { python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); k=sys.argv[2]; print(r["ns_per_particle_step"] if k=="ns" else r["loop_time_s"], r.get("state_hash",""))' $1/run.json $2; }
 t_end=$(( $(date +%s) + ${DEADLINE:-500} ))
@@ -39,13 +59,18 @@ for r in $(seq 1 ${ROUNDS:-2}); do
  for c in ${CASES:-s4 s1}; do
   for v in $VARS; do
    (( $(date +%s) > t_end )) && break 3
-   B=vb/$v/seaspring; o=$W/o_${c}_$v; rm -rf $o
+   B=vb/$(binof $v)/seaspring; o=$W/o_${c}_$v; rm -rf $o; X=$(argsof $v)
    case $c in
-    s4) $B $A -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
-    s1) $B $A -nsteps:${S1STEPS:-300} $W/s1m $o >/dev/null 2>&1; k=ns;;
-    sps) $B $A -viscolamsps:1e-6 -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
-    late) $B $A -restart:$W/late/restart.h5 -nsteps:$((LSTEP+300)) $W/s1m $o >/dev/null 2>&1; k=ns;;
-    l3) $B -gpu -sv:none -progress:0 -tmax:0.02 $W/l3d $o >/dev/null 2>&1; k=loop;;
+    s4) $B $A $X -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
+    s1) $B $A $X -nsteps:${S1STEPS:-300} $W/s1m $o >/dev/null 2>&1; k=ns;;
+    sps) $B $A $X -viscolamsps:1e-6 -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
+    late) $B $A $X -restart:$W/late/restart.h5 -nsteps:$((LSTEP+300)) $W/s1m $o >/dev/null 2>&1; k=ns;;
+    l3) $B -gpu -sv:none -progress:0 $X -tmax:0.02 $W/l3d $o >/dev/null 2>&1; k=loop;;
+    db3) $B -gpu -sv:none -progress:0 $X -nsteps:${DB3STEPS:-400} $W/db3 $o >/dev/null 2>&1; k=ns;;
+    db3l) $B -gpu -sv:none -progress:0 $X -tmax:0.3 $W/db3l $o >/dev/null 2>&1; k=loop;;
+    db3x) $B -gpu -sv:none -progress:0 $X -tmax:1.0 $W/db3l $o >/dev/null 2>&1; k=loop;;
+    l2) $B -gpu -sv:none -progress:0 $X -tmax:0.1 $W/l2d $o >/dev/null 2>&1; k=loop;;
+    ant) $B -gpu -sv:none -progress:0 $X -tmax:0.1 $W/ant $o >/dev/null 2>&1; k=loop;;
    esac
    [[ -f $o/run.json ]] || { echo "$c,$v,$r: no run.json"; continue; }
    read val h < <(rec $o $k); echo "$c,$v,$r,$val,$h" | tee -a $OUT/ab.csv

@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
             ->expected(0, 1);
     measure->add_option("--kclimit", mo.kclimit, "Shepard limit: wsum below it gives 0 (default 0.5)");
     std::vector<double> gridmin;
-    measure->add_option("--celldiv", mo.grid.cell_div, "cells of 2h/N (1..4; default 1)")->check(CLI::Range(1, 4));
+    measure->add_option("--celldiv", mo.grid.cell_div, "cells of 2h/N (1..4; 5: cells of dp; default 1)")->check(CLI::Range(1, 5));
     measure->add_option("--gridmin", gridmin,
                         "x,y,z: the cell grid's origin (default: the fluid's box less 4h); the solver's domain "
                         "minimum and -celldiv of its cell size give its sums bit for bit")
@@ -122,8 +122,8 @@ int main(int argc, char** argv) {
     forces->add_option("--filexml", fo.filexml, "the resolved case the run read (NAME.xml written by gencase)")->required();
     CLI::Option* omk = forces->add_option("--onlymk", onlymk, "absolute MKs (mkbound + mkboundfirst), e.g. 21 or 11,21-23");
     forces->add_option("--mkbound", mkbound, "or local mkbound numbers, e.g. 10")->excludes(omk);
-    forces->add_option("--celldiv", fo.cell_div, "cells of 2h/N as the run's -cellmode (1..4; default: as -cellmode:auto)")
-        ->check(CLI::Range(1, 4));
+    forces->add_option("--celldiv", fo.cell_div, "cells of 2h/N as the run's -cellmode (1..4, 5 for -cellmode:dp; default: as -cellmode:auto)")
+        ->check(CLI::Range(1, 5));
     CLI::Option* art = forces->add_option("--viscoart", viscoart, "artificial viscosity alpha instead of the case's");
     forces->add_option("--viscolam", viscolam, "laminar viscosity nu [m^2/s] instead of the case's")->excludes(art);
     forces->add_option("--viscoboundfactor", fo.visco_bound_factor, "instead of the case's ViscoBoundFactor");

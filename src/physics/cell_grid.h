@@ -3,7 +3,8 @@
 /// \brief The cell grid of the neighbour search and the cell-relative float positions
 ///        ("PosCell", as DualSPHysics) used by every pair interaction.
 ///
-/// Cells are cubes of size 2h/cell_div over the simulation domain (x fastest). A particle's
+/// Cells are cubes of size 2h/cell_div (or one particle spacing, kCellDivSpacing) over the
+/// simulation domain (x fastest). A particle's
 /// PosCell is (x - ox, y - oy, z - oz, packed cell coordinates) with (ox, oy, oz) its cell's
 /// origin: offsets stay small, so float pair distances keep double-like accuracy in long
 /// domains. Pair distance: (local_a - local_b) + cellsize * (cell_a - cell_b), exact in the
@@ -31,8 +32,8 @@ struct CellGrid {
     float cellsizef = 0;                   ///< float(cellsize)
     float ovcellsizef = 0;                 ///< 1 / cellsizef
     int ncx = 1, ncy = 1, ncz = 1;         ///< cells per axis
-    int range = 1;                         ///< cells searched on each side (cell_div, + 1 with a skin)
-    int cell_div = 1;                      ///< cells per 2h
+    int range = 1;                         ///< cells searched on each side (cell_div or cellsToReach, + 1 with a skin)
+    int cell_div = 1;                      ///< cell mode: cells of 2h/cell_div (1..4), of dp (kCellDivSpacing)
     float skinf = 0;                       ///< skin [m] (0: sorted at every divide)
     std::uint32_t bitsx = 1, bitsy = 1;    ///< packed cell: cx | cy << bitsx | cz << (bitsx+bitsy)
     std::uint32_t maskx = 1, masky = 1;
@@ -148,19 +149,48 @@ constexpr double kMaxSkinFraction = 0.5;
 /// The default skin (-skin): measured in docs/performance-large.md.
 constexpr double kDefaultSkinFraction = 0.05;
 
-/// Builds the grid over [min, max] with cells of size 2h/cell_div and a skin of
-/// `skin_fraction` cells (0 <= skin_fraction <= kMaxSkinFraction; host only).
-/// Returns false when the packed cell does not fit 32 bits or there are too many cells.
+/// The cell mode of cells one particle spacing dp wide (-cellmode:dp); modes 1..4 are cells of
+/// 2h/cell_div. With h between 1.5 dp and 2 dp (DualSPHysics' default coefh 1 in 3D gives
+/// h = 1.73 dp) neither h/2 nor 2h/3 is a whole number of spacings; cells of dp are, so the grid
+/// can be centred on the fluid's lattice (solver/grid_origin.h), and the search reaches
+/// cellsToReach(h, dp) cells (4 there).
+constexpr int kCellDivSpacing = 5;
+
+/// The least n with n cells of `cellsize` spanning 2h: the cells a search reaches on each side.
+inline int cellsToReach(double h, double cellsize) {
+    int n = 1;
+    while (double(n) * cellsize < 2.0 * h && n < 64) ++n;
+    return n;
+}
+
+/// The most cells a search may reach with cells of dp (2h <= 8 dp): the near flags' window
+/// (particle_updates.h) holds at most 31 cells, 2 (reach + 1) + 1 with a skin.
+constexpr int kMaxSpacingReach = 8;
+
+/// The cell size of mode `cell_div`: 2h/cell_div for 1..4, dp for kCellDivSpacing.
+inline double cellSizeOfMode(double h, double dp, int cell_div) {
+    return cell_div == kCellDivSpacing ? dp : 2.0 * h / double(cell_div);
+}
+
+/// Builds the grid over [min, max] with cells of mode `cell_div` (cellSizeOfMode: 2h/cell_div,
+/// or dp for kCellDivSpacing) and a skin of `skin_fraction` cells (0 <= skin_fraction <=
+/// kMaxSkinFraction; host only). Returns false when the packed cell does not fit 32 bits, there
+/// are too many cells, or cells of dp are asked for with dp <= 0, dp > 2h or 2h > 8 dp
+/// (kMaxSpacingReach).
 inline bool makeCellGrid(double minx, double miny, double minz, double maxx, double maxy,
-                         double maxz, double h, int cell_div, CellGrid& g, double skin_fraction = 0.0) {
+                         double maxz, double h, int cell_div, CellGrid& g, double skin_fraction = 0.0,
+                         double dp = 0.0) {
+    if (cell_div == kCellDivSpacing && !(dp > 0.0 && dp <= 2.0 * h && cellsToReach(h, dp) <= kMaxSpacingReach))
+        return false;
     g.minx = minx;
     g.miny = miny;
     g.minz = minz;
-    g.cellsize = 2.0 * h / double(cell_div);
+    g.cellsize = cellSizeOfMode(h, dp, cell_div);
     g.cellsizef = float(g.cellsize);
     g.ovcellsizef = 1.f / g.cellsizef;
     g.cell_div = cell_div;
-    g.range = cell_div + (skin_fraction > 0.0 ? 1 : 0);
+    const int reach = cell_div == kCellDivSpacing ? cellsToReach(h, g.cellsize) : cell_div;
+    g.range = reach + (skin_fraction > 0.0 ? 1 : 0);
     g.skinf = float(skin_fraction * g.cellsize);
     auto count = [&](double lo, double hi) { return int(std::floor((hi - lo) / g.cellsize)) + 1; };
     g.ncx = count(minx, maxx);

@@ -87,7 +87,7 @@ void dispatchVisco(const ForceModel& m, const SortedParticles& s, const std::vec
 std::unique_ptr<ForceModel, ForceModelDeleter> makeForceModel(const ForcesOptions& o, std::ostream& log) {
     if (o.filexml.empty()) throw Error("-filexml: the resolved case (NAME.xml written by gencase) is needed");
     if (o.onlymk.empty() == o.mkbound.empty()) throw Error("give either -onlymk (absolute MKs) or -mkbound (local numbers)");
-    if (o.cell_div < 0 || o.cell_div > 4) throw Error("-celldiv must be 1..4 (0: as the run's -cellmode:auto)");
+    if (o.cell_div < 0 || o.cell_div > 5) throw Error("-celldiv must be 1..5 (5: -cellmode:dp; 0: as the run's -cellmode:auto)");
     solver::SolverCase k = solver::loadSolverCase(o.filexml);
     solver::SolverParameters& p = k.params;
     if (o.visco_treatment != 0) {

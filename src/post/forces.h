@@ -35,7 +35,7 @@ struct ForcesOptions {
     int first = -1, last = -1;
     std::vector<int> onlymk;   ///< absolute MKs (DualSPHysics' -onlymk: mkbound + mkboundfirst)
     std::vector<int> mkbound;  ///< or local mkbound numbers (as the gauges' <target mkbound>)
-    int cell_div = 0;          ///< the run's -cellmode: 0 auto (solver::resolveCellDiv), 1..4
+    int cell_div = 0;          ///< the run's -cellmode: 0 auto (solver::resolveCellDiv), 1..4, 5 dp
     int visco_treatment = 0;   ///< 0: the case's; 1 artificial, 3 laminar (-viscoart / -viscolam)
     double visco = -1;         ///< with visco_treatment
     double visco_bound_factor = -1;  ///< < 0: the case's

@@ -77,7 +77,7 @@ std::vector<PointSums> measurePart(const io::PartData& d, const std::vector<Vec3
         throw Error(what + ": attributes h, dp, rhop0, dimension missing or invalid");
     const bool wendland = k.kernel == "Wendland C2";
     if (!wendland && k.kernel != "cubic spline") throw Error(what + ": unknown kernel '" + k.kernel + "'");
-    if (cell_div < 1 || cell_div > 4) throw Error("cell_div must be 1..4");
+    if (cell_div < 1 || cell_div > physics::kCellDivSpacing) throw Error("cell_div must be 1..5 (5: cells of dp)");
     const int dim = k.dimension;
     std::vector<PointSums> out(points.size());
 
@@ -112,8 +112,9 @@ std::vector<PointSums> measurePart(const io::PartData& d, const std::vector<Vec3
         if (dim == 3) ymin = grid.min.y;
     }
     physics::CellGrid g;
-    if (!physics::makeCellGrid(xmin, ymin, zmin, hi[0] + m, ymax, hi[2] + m, k.h, cell_div, g, 0.0))
-        throw Error(what + ": the fluid's bounding box needs too many cells");
+    if (!physics::makeCellGrid(xmin, ymin, zmin, hi[0] + m, ymax, hi[2] + m, k.h, cell_div, g, 0.0, k.dp))
+        throw Error(what + ": the fluid's bounding box needs too many cells" +
+                    (cell_div == physics::kCellDivSpacing ? " (or cells of dp need dp <= 2h <= 8 dp)" : ""));
     const double gmax[3] = {hi[0] + m, ymax, hi[2] + m};
 
     // Sorted by (cell, id) as the solver's sort, PosCell and cell starts.

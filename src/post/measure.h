@@ -39,7 +39,8 @@ struct PointSums {
     double rhop = 0;  ///< sum V_j W_j rho_j
 };
 
-/// The cell grid of the measure: cells of 2h/cell_div (1..4) from the fluid's bounding box grown
+/// The cell grid of the measure: cells of 2h/cell_div (1..4) or of dp (5, physics::kCellDivSpacing)
+/// from the fluid's bounding box grown
 /// by 4h, or from `min` when given (it must lie below every fluid particle). Only the float
 /// rounding of the pair offsets depends on it: with the solver's grid (its <simulationdomain>
 /// minimum and cell size, and -skin:0) the sums are those of the in-run gauges bit for bit.

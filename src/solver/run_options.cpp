@@ -245,13 +245,13 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (g.value.empty()) usageError(g.arg + ": the restart file is missing");
             o.restart_file = g.value;
         } else if (name == "cellmode") {
-            static const char* const kModes[] = {"auto", "full", "h", "third", "quarter"};  // index = cell_div
+            static const char* const kModes[] = {"auto", "full", "h", "third", "quarter", "dp"};  // index = cell_div
             o.cell_div = -1;
-            for (int k = 0; k < 5; ++k)
+            for (int k = 0; k < 6; ++k)
                 if (g.value == kModes[k]) o.cell_div = k;
             if (o.cell_div < 0)
                 usageError(g.arg + ": \"" + g.value +
-                           "\" is not a cell mode (supported: auto, full, h, third, quarter)");
+                           "\" is not a cell mode (supported: auto, full, h, third, quarter, dp)");
         } else if (name == "skin") {
             o.skin = toDouble(g, Range::NonNegative);
             if (*o.skin > physics::kMaxSkinFraction)
@@ -380,12 +380,14 @@ Run control:
                        run.json and the summary
   -dirdataout:NAME     accepted for DualSPHysics command lines: part files go to OUTDIR/data
                        whatever NAME (a note says so when NAME is not data)
-  -cellmode:auto|full|h|third|quarter
-                       neighbour cells of size 2h (full), h (h), 2h/3 (third) or h/2
-                       (quarter); finer cells mean fewer candidates per neighbour and
-                       more rows of cells to visit. auto (default): in 3D quarter,
-                       or third where h < 2 dp (h/2 narrower than a spacing); h in
-                       2D; or the next coarser mode if the grid would exceed 16
+  -cellmode:auto|full|h|third|quarter|dp
+                       neighbour cells of size 2h (full), h (h), 2h/3 (third), h/2
+                       (quarter) or one particle spacing (dp: the search reaches the
+                       cells within 2h, at most 8); finer cells mean fewer candidates
+                       per neighbour and more rows of cells to visit. auto (default):
+                       in 3D quarter where h >= 2 dp, dp where 1.5 dp < h < 2 dp
+                       (DualSPHysics' default coefh 1 gives 1.73 dp), else third; h
+                       in 2D; or the next coarser mode if the grid would exceed 16
                        cells per particle + 2^20 or a 32-bit packed cell
   -skin:F              skin of the neighbour cells, a fraction 0 <= F <= 0.5 of the cell
                        size (default 0.05): particles keep their cell while they stay

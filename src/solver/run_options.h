@@ -34,7 +34,8 @@ struct RunOptions {
     std::optional<double> tmax, tout, visco, visco_bound_factor, ddt_value, cfl, dt_fixed;
     std::optional<int> step_algorithm, verlet_steps, kernel, visco_treatment, ddt;
     std::optional<long long> nsteps;  ///< stop after this many steps
-    /// Cells of 2h/cell_div: 1 -cellmode:full, 2 h, 3 third, 4 quarter; 0 auto (resolveCellDiv).
+    /// Cells of 2h/cell_div: 1 -cellmode:full, 2 h, 3 third, 4 quarter; 5 (physics::kCellDivSpacing)
+    /// dp, cells of one particle spacing; 0 auto (resolveCellDiv).
     int cell_div = 0;
     /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
     /// at every divide); unset: kDefaultSkinFraction (physics/cell_grid.h).

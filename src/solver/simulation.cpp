@@ -46,11 +46,11 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     static const char* ddt[] = {"no DDT", "DDT Molteni", "DDT Fourtakas", "DDT Fourtakas full"};
     s << ", " << ddt[p.density_dt];
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
-    static const char* const kCells[] = {"?", "2h", "h", "2h/3", "h/2"};
+    static const char* const kCells[] = {"?", "2h", "h", "2h/3", "h/2", "dp"};
     static const char* const kSlip[] = {"?", "vel=0", "no-slip", "free-slip"};
     if (p.boundary == 2) s << ", mDBC " << kSlip[p.slip_mode >= 1 && p.slip_mode <= 3 ? p.slip_mode : 0];
     else s << ", DBC";
-    s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 4 ? cell_div : 0];
+    s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 5 ? cell_div : 0];
     if (skin > 0) s << " with a skin of " << skin << " cell";
     if (pair_lanes > 1) s << ", " << pair_lanes << " pair lanes";
     return s.str();
@@ -58,14 +58,22 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
 
 int resolveCellDiv(const SolverCase& c, int cell_div) {
     if (cell_div > 0) return cell_div;
-    const double np = double(c.particles.size());
-    int finest = 2;
-    if (c.constants.dimensions == 3)  // h/2 where it is at least dp wide, else 2h/3
-        finest = c.constants.h >= 2.0 * c.constants.dp * (1.0 - 1e-9) ? 4 : 3;
-    for (int d = finest; d > 1; --d) {
+    const double np = double(c.particles.size()), h = c.constants.h, dp = c.constants.dp;
+    // Finest first: 3D h/2 where it is at least dp wide; dp where h/2 is narrower and 2h/3 wider
+    // than dp (neither a whole number of spacings); else 2h/3. 2D: h.
+    int modes[3] = {2, 0, 0};
+    if (c.constants.dimensions == 3) {
+        if (h >= 2.0 * dp * (1.0 - 1e-9)) modes[0] = 4;
+        else if (h > 1.5 * dp * (1.0 + 1e-9)) modes[0] = physics::kCellDivSpacing;
+        else modes[0] = 3;
+        modes[1] = modes[0] == 3 ? 2 : 3;
+        modes[2] = modes[0] == 3 ? 0 : 2;
+    }
+    for (int d : modes) {
         physics::CellGrid g;
-        if (physics::makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
-                                  c.domain_max.z, c.constants.h, d, g) &&
+        if (d > 0 &&
+            physics::makeCellGrid(c.domain_min.x, c.domain_min.y, c.domain_min.z, c.domain_max.x, c.domain_max.y,
+                                  c.domain_max.z, h, d, g, 0.0, dp) &&
             double(g.cellCount()) <= 16.0 * np + 1048576.0)
             return d;
     }
@@ -158,10 +166,14 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, in
     s.fluid = makeFluidConstants(fi);
     s.sps = makeSpsConstants(dp, c.constants.dimensions);
 
-    const GridOrigin origin = latticeCentredGridOrigin(c, 2.0 * h / double(cell_div));
+    if (cell_div == kCellDivSpacing && !(dp <= 2.0 * h && cellsToReach(h, dp) <= kMaxSpacingReach))
+        throwInputError(c.xml_path, 0, "-cellmode:dp needs dp <= 2h <= " + std::to_string(kMaxSpacingReach) +
+                                           " dp (dp " + fmt("%g", dp) + " m, h " + fmt("%g", h) +
+                                           " m): use another -cellmode");
+    const GridOrigin origin = latticeCentredGridOrigin(c, cellSizeOfMode(h, dp, cell_div));
     s.grid_centred = origin.any();
     if (!makeCellGrid(origin.min[0], origin.min[1], origin.min[2], c.domain_max.x, c.domain_max.y, c.domain_max.z,
-                      h, cell_div, s.grid, skin))
+                      h, cell_div, s.grid, skin, dp))
         throwInputError(c.xml_path, 0, "the simulation domain is too large for the cell grid (" +
                         std::to_string(s.grid.ncx) + " x " + std::to_string(s.grid.ncy) + " x " +
                         std::to_string(s.grid.ncz) + " cells of " + fmt("%g", s.grid.cellsize) + " m)");

@@ -63,7 +63,7 @@ struct RunSummary {
 };
 
 /// Builds the backend's initial data from the case (particles in id order); cells of
-/// 2h/cell_div (resolveCellDiv) with a skin of `skin` cells (cell_grid.h).
+/// mode cell_div (resolveCellDiv; physics::cellSizeOfMode) with a skin of `skin` cells (cell_grid.h).
 /// `pair_lanes`: as RunOptions::pair_lanes (0: resolvePairLanes's choice).
 BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0);
 /// Fluid particles from which one pair lane suffices (resolvePairLanes).
@@ -80,12 +80,14 @@ std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
 /// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
 double resolveSkin(const RunOptions& o);
 /// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) in 3D 4
-/// where h >= 2 dp (cells of h/2 at least dp wide), else 3 (on an H100,
-/// SPHERIC Test 2 at 4.4 M particles, h = 2 dp, runs 13% faster than with cells of h; 2h/3 where
-/// h < 2 dp: the 3D sluice gate (h = 1.5 dp) 10% and FlexStruc Liao 3D (h = 1.73 dp) 3% faster
-/// than with cells of h/2, whose cells would hold fewer than one particle), and 2 in 2D, each the
+/// where h >= 2 dp (cells of h/2 at least dp wide; on an H100, SPHERIC Test 2 at 4.4 M
+/// particles, h = 2 dp, runs 13% faster than with cells of h), physics::kCellDivSpacing (cells
+/// of dp) where 1.5 dp < h < 2 dp (DualSPHysics' default coefh 1 gives h = 1.73 dp: cells of dp
+/// are a whole number of spacings, so the grid can be centred on the fluid's lattice, which
+/// neither h/2 nor 2h/3 allows), else 3 (2h/3: the 3D sluice gate, h = 1.5 dp, 10% faster than
+/// with cells of h/2, whose cells would hold fewer than one particle), and 2 in 2D, each the
 /// finest whose grid fits 32-bit packed cells and at most 16 cells per particle + 2^20 (else the
-/// next coarser; 1 at the coarsest).
+/// next coarser: 3, then 2; 1 at the coarsest).
 int resolveCellDiv(const SolverCase& c, int cell_div);
 
 class Simulation {

@@ -132,7 +132,7 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes3D) {
     for (std::size_t i = 0; i < r1.state.pos.size(); ++i)
         maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
     EXPECT_LT(maxdiff, 1e-5);
-    EXPECT_NE(r1.summary.options.find("cells of 2h/3"), std::string::npos) << r1.summary.options;  // h < 2 dp
+    EXPECT_NE(r1.summary.options.find("cells of dp"), std::string::npos) << r1.summary.options;  // 1.5 dp < h < 2 dp
 }
 
 // h = 2 dp (SPHERIC Test 2's choice) and cells of h/2 = dp: the cell grid starts half a spacing
@@ -167,7 +167,8 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashesOnALatticeCentredGrid) {
     EXPECT_LT(maxdiff, 1e-5);
 }
 
-// -cellmode:auto: in 3D cells of h/2, or 2h/3 where h/2 would be narrower than dp, and h in 2D,
+// -cellmode:auto: in 3D cells of h/2, or of dp where h/2 would be narrower and 2h/3 wider than dp,
+// or 2h/3, and h in 2D,
 // coarser when the grid would be too large for the particles; explicit modes pass through.
 TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
     const std::string dir = scratch("autocells");
@@ -177,7 +178,7 @@ TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
     const auto r2d = test::runCpu(test::generateCase(dir, "tank", tank2d(kVariants[0].params)), dir + "/o2", 1,
                                   [](solver::RunOptions& o) { o.nsteps = 1; });
     EXPECT_NEAR(r3d.kase.constants.h / r3d.kase.constants.dp, std::sqrt(3.0), 1e-9);  // coefh 1
-    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 0), 3);  // h/2 = 0.87 dp: 2h/3 = 1.15 dp
+    EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 0), physics::kCellDivSpacing);  // h/2 = 0.87 dp, 2h/3 = 1.15 dp: dp
     EXPECT_EQ(solver::resolveCellDiv(r2d.kase, 0), 2);
     EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 2), 2);
     EXPECT_EQ(solver::resolveCellDiv(r3d.kase, 4), 4);
@@ -186,9 +187,21 @@ TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
     fat.constants.h = 2.0 * fat.constants.dp;
     EXPECT_EQ(solver::resolveCellDiv(fat, 0), 4);
     fat.constants.h = 1.99 * fat.constants.dp;
+    EXPECT_EQ(solver::resolveCellDiv(fat, 0), physics::kCellDivSpacing);
+    fat.constants.h = 1.5 * fat.constants.dp;  // 2h/3 = dp (the 3D sluice gate's): 2h/3
     EXPECT_EQ(solver::resolveCellDiv(fat, 0), 3);
     fat.constants.h = 1.4 * fat.constants.dp;  // 2h/3 < dp too: still 2h/3
     EXPECT_EQ(solver::resolveCellDiv(fat, 0), 3);
+    // -cellmode:dp where 2h spans more than 8 spacings (the near flags' window): an error
+    // naming the option and the values, not a grid that misses neighbours.
+    solver::SolverCase wide_h = r3d.kase;
+    wide_h.constants.h = 4.5 * wide_h.constants.dp;
+    try {
+        (void)solver::makeBackendSetup(wide_h, physics::kCellDivSpacing, 0.05);
+        ADD_FAILURE() << "-cellmode:dp with h = 4.5 dp was accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("-cellmode:dp needs dp <= 2h <= 8 dp"), std::string::npos) << e.what();
+    }
     fat.constants.h = 2.0 * fat.constants.dp;
     // The same particles in a domain 150 times longer: h/2 cells exceed 16 per particle + 2^20.
     solver::SolverCase wide = fat;

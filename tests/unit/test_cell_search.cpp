@@ -25,10 +25,13 @@ using namespace seaspring::physics;
 TEST(CellSearch, NearFlagsEqualABruteForceScanOfTheSearchBox) {
     std::mt19937 rng(7);
     for (int dim : {2, 3}) {
-        for (int div : {1, 2, 3, 4})
+        for (int div : {1, 2, 3, 4, kCellDivSpacing})
           for (double skin : {0.0, 0.05}) {
-            CellGrid g;
-            ASSERT_TRUE(makeCellGrid(0, 0, 0, 1.0, dim == 3 ? 0.9 : 0.0, 0.9, 0.05, div, g, skin));
+            CellGrid g;  // cells of dp: h = 1.73 dp (coefh 1 in 3D), the search reaches 4 cells
+            ASSERT_TRUE(makeCellGrid(0, 0, 0, 1.0, dim == 3 ? 0.9 : 0.0, 0.9, 0.05, div, g, skin, 0.05 / 1.7320508));
+            if (div == kCellDivSpacing) {
+                ASSERT_EQ(g.range, 4 + (skin > 0 ? 1 : 0));
+            }
             const std::uint32_t nc = g.cellCount();
             // Sparse occupancy (about one occupied cell per search box; occupied cells hold 1-3
             // particles), as a block's cell ranges: near and far cells both occur.
@@ -96,8 +99,8 @@ namespace {
 template <int kDim>
 void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
     const double h = 0.03;
-    CellGrid g;
-    ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.4, kDim == 3 ? 0.25 : 0.0, 0.3, h, div, g, skin));
+    CellGrid g;  // kCellDivSpacing: cells of dp with h = 1.73 dp, as DualSPHysics' coefh 1 in 3D
+    ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.4, kDim == 3 ? 0.25 : 0.0, 0.3, h, div, g, skin, h / 1.7320508));
     FluidConstants c;
     c.ker.kernelsize2 = float((2.0 * h) * (2.0 * h));
     const std::uint32_t n = kDim == 3 ? 1500 : 500;
@@ -180,7 +183,7 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
 
 TEST(CellSearch, CandidateRowsHoldEveryNeighbourInSortedOrder) {
     std::mt19937 rng(3);
-    for (int div : {1, 2, 3}) {
+    for (int div : {1, 2, 3, kCellDivSpacing}) {
         checkCandidateRows<2>(div, rng);
         checkCandidateRows<3>(div, rng);
     }
@@ -188,7 +191,7 @@ TEST(CellSearch, CandidateRowsHoldEveryNeighbourInSortedOrder) {
 
 TEST(CellSearch, CandidateRowsHoldEveryNeighbourOfParticlesMovedWithinTheSkin) {
     std::mt19937 rng(5);
-    for (int div : {1, 2, 4})
+    for (int div : {1, 2, 4, kCellDivSpacing})
         for (double skin : {0.05, kMaxSkinFraction}) {
             checkCandidateRows<2>(div, rng, skin);
             checkCandidateRows<3>(div, rng, skin);

@@ -95,6 +95,7 @@ TEST(RunOptions, RunControl) {
     EXPECT_EQ(parseWith({"-cellmode:h"}).cell_div, 2);
     EXPECT_EQ(parseWith({"-cellmode:third"}).cell_div, 3);
     EXPECT_EQ(parseWith({"-cellmode:quarter"}).cell_div, 4);
+    EXPECT_EQ(parseWith({"-cellmode:dp"}).cell_div, 5);
     EXPECT_EQ(parseWith({"-cellmode:auto"}).cell_div, 0);
     EXPECT_FALSE(parseWith({}).skin.has_value());
     EXPECT_EQ(*parseWith({"-skin:0"}).skin, 0.0);
@@ -301,7 +302,7 @@ TEST(RunOptions, ValuesMustLieInRange) {
     expectError({"-dirdataout:a/b"}, "-dirdataout:a/b: expected a folder name inside OUTDIR");
     expectError({"-svpips:3"}, "-svpips:3: 3 must be 0..2");
     expectError({"-cellmode:half"},
-                "-cellmode:half: \"half\" is not a cell mode (supported: auto, full, h, third, quarter)");
+                "-cellmode:half: \"half\" is not a cell mode (supported: auto, full, h, third, quarter, dp)");
     expectError({"-sv:bi4"}, "-sv:bi4: unknown output \"bi4\" (supported: h5, vtk, none; DualSPHysics' binx and info are taken as h5 and as run.json)");
     expectError({"-sv:h5,"}, "-sv:h5,: unknown output \"\" (supported: h5, vtk, none; DualSPHysics' binx and info are taken as h5 and as run.json)");
     expectError({"-sv:vtk,vtk"}, "-sv:vtk,vtk: \"vtk\" is listed twice");
