@@ -21,6 +21,8 @@
 #        db3x the same, first 1.0 s (the front has hit the obstacle and the far wall): loop seconds
 #        l2   FlexStruc Liao 2D as shipped (28 k), first 0.1 s: loop seconds (needs LIAO=1)
 #        ant  the Antoci gate 2D (cases/antoci_gate2d, 17 k), first 0.1 s: loop seconds
+#        v2d  DualSPHysics' CaseDambreakVal2D as shipped (dp 0.01), first 0.5 s: loop seconds
+#        rtd  DualSPHysics' FlexStruc CaseRollingTankDeep as shipped, first 0.3 s: loop seconds
 # Variants of one build: ARGS_NAME (extra solver options of variant NAME's runs) and BIN_NAME
 # (the build it runs, default NAME), e.g. VARS="third dp" BIN_third=new BIN_dp=new
 # ARGS_third=-cellmode:third ARGS_dp=-cellmode:dp with build-dev/v_new.tar.xz.
@@ -48,6 +50,8 @@ if [[ -n "${LIAO:-}" && " ${CASES:-} " == *" l2 "* && ! -f $W/l2d.h5 ]]; then
   vb/$first/gencase build-dev/shared/dualsphysics-cases/flexstruc/CaseDambreak2D_FSI_Def.xml $W/l2d >/dev/null 2>&1
 fi
 [[ " ${CASES:-} " == *" ant "* && ! -f $W/ant.h5 ]] && vb/$first/gencase cases/antoci_gate2d/AntociGate2D_Def.xml $W/ant >/dev/null 2>&1
+[[ " ${CASES:-} " == *" v2d "* && ! -f $W/v2d.h5 ]] && vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreakVal2D_Def.xml $W/v2d >/dev/null 2>&1
+[[ " ${CASES:-} " == *" rtd "* && ! -f $W/rtd.h5 ]] && vb/$first/gencase build-dev/shared/dualsphysics-cases/flexstruc/CaseRollingTankDeep_Def.xml $W/rtd >/dev/null 2>&1
 if [[ " ${CASES:-} " == *" db3"* ]]; then
   [[ -f $W/db3.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreak_Def.xml $W/db3 -dp:0.004 >/dev/null 2>&1
   [[ -f $W/db3l.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreak_Def.xml $W/db3l >/dev/null 2>&1
@@ -71,6 +75,8 @@ for r in $(seq 1 ${ROUNDS:-2}); do
     db3x) $B -gpu -sv:none -progress:0 $X -tmax:1.0 $W/db3l $o >/dev/null 2>&1; k=loop;;
     l2) $B -gpu -sv:none -progress:0 $X -tmax:0.1 $W/l2d $o >/dev/null 2>&1; k=loop;;
     ant) $B -gpu -sv:none -progress:0 $X -tmax:0.1 $W/ant $o >/dev/null 2>&1; k=loop;;
+    v2d) $B -gpu -sv:none -progress:0 $X -tmax:0.5 $W/v2d $o >/dev/null 2>&1; k=loop;;
+    rtd) $B -gpu -sv:none -progress:0 $X -tmax:0.3 $W/rtd $o >/dev/null 2>&1; k=loop;;
    esac
    [[ -f $o/run.json ]] || { echo "$c,$v,$r: no run.json"; continue; }
    read val h < <(rec $o $k); echo "$c,$v,$r,$val,$h" | tee -a $OUT/ab.csv

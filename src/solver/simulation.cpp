@@ -345,8 +345,16 @@ void Simulation::blownUp(BlowupDiagnosis d) {
     sum_.blowup = std::move(d);
 }
 
+bool Simulation::outputNeedsState() const {
+    return opt_.save_h5 || opt_.save_vtk || observer_ || !setup_.solid.empty();
+}
+
 bool Simulation::output(double time, long long step) {
     Health& h = *health_;
+    if (!outputNeedsState() && !backend_->forcesAhead() && backend_->notFiniteCount() == 0) {
+        noteOutput(time);  // nothing reads the state, and no particle is not finite
+        return true;
+    }
     backend_->download(h.scan);
     if (!healthy(h.scan, time, step)) return false;
     writeOutput(h.last_good, time, step, true);  // the state just downloaded (healthy swapped it in)
@@ -355,6 +363,18 @@ bool Simulation::output(double time, long long step) {
 
 void Simulation::writeOutput(const HostState& st, double time, long long step, bool ledger) {
     if (observer_) observer_(time, step, st);
+    if (!setup_.solid.empty() && ledger) {
+        const Vec3d g = case_.constants.gravity;
+        std::vector<physics::Double3> boundary_force;
+        if (case_.nfluid > 0) backend_->boundaryForces(boundary_force);
+        ledger_->file.add(ledgerRow(time, st, setup_.solid, case_.particles.pos, setup_.nbound,
+                                    case_.constants.massfluid, physics::Double3{g.x, g.y, g.z}, boundary_force));
+    }
+    if (opt_.save_h5 || opt_.save_vtk) writeParticleFiles(st, time, step);
+    noteOutput(time);
+}
+
+void Simulation::writeParticleFiles(const HostState& st, double time, long long step) {
     const std::size_t np = st.pos.size();
     std::vector<double> pos(3 * np);
     std::vector<float> vel(3 * np), rhop(np), press(np);
@@ -375,13 +395,6 @@ void Simulation::writeOutput(const HostState& st, double time, long long step, b
     std::vector<std::uint8_t> broken;
     if (!setup_.solid.empty()) {
         solidFields(st, disp, strain, broken, damage);
-    }
-    if (!setup_.solid.empty() && ledger) {
-        const Vec3d g = case_.constants.gravity;
-        std::vector<physics::Double3> boundary_force;
-        if (case_.nfluid > 0) backend_->boundaryForces(boundary_force);
-        ledger_->file.add(ledgerRow(time, st, setup_.solid, case_.particles.pos, setup_.nbound,
-                                    case_.constants.massfluid, physics::Double3{g.x, g.y, g.z}, boundary_force));
     }
     if (opt_.save_h5) {
         io::PartFrame f;
@@ -433,6 +446,9 @@ void Simulation::writeOutput(const HostState& st, double time, long long step, b
         }
         io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
     }
+}
+
+void Simulation::noteOutput(double time) {
     if (gauges_) gauges_->flush();
     health_->written_time = time;
     ++out_index_;

@@ -108,9 +108,20 @@ public:
 private:
     /// Downloads the state, scans it for a blow-up (blowup_check.h) and, when it is good,
     /// writes it as the next output; returns false (nothing written, sum_.blowup set) when not.
+    /// When nothing reads the state at an output (outputNeedsState), the backend's count of
+    /// non-finite particles is the check, as between outputs, and only a count above zero
+    /// brings the state to the host (to name the particles).
     bool output(double time, long long step);
+    /// Whether an output reads the state: part files (-sv h5 or vtk), an output observer, or
+    /// the solids' ledger. Without them (-sv:none on a fluid-only case, as the benchmarks and
+    /// gauge-only runs) an output is the gauges' flush and the count of outputs.
+    bool outputNeedsState() const;
     /// Writes `st` as the next output (part files, ledger row when `ledger`, gauges flushed).
     void writeOutput(const HostState& st, double time, long long step, bool ledger);
+    /// The particle files of an output (-sv h5, vtk).
+    void writeParticleFiles(const HostState& st, double time, long long step);
+    /// Counts an output at `time` and flushes the gauge files.
+    void noteOutput(double time);
     /// The blow-up scan of a downloaded state; a good state becomes the last good one (swapped
     /// with it: `st` is left holding the previous one).
     bool healthy(HostState& st, double time, long long step);

@@ -286,3 +286,30 @@ TEST(RunRobustness, TheProgramWritesRunJsonWithTheDiagnosisAndExitsWithOne) {
     EXPECT_HAS(test::readFile(dir + "/out/Run.out"), "blow-up detected (fluid loss)");
     EXPECT_HAS(test::readFile(dir + "/log.txt"), "Stopped (blow-up: fluid loss)");
 }
+
+// -sv:none on a fluid-only case: at an output nothing reads the state, so the backend's count of
+// non-finite particles is the check there (as between outputs) and the state stays on the
+// backend. The outputs are still counted and the run is the same; a blow-up is still caught.
+TEST(RunRobustness, OutputsWithoutFilesAreCountedAndTheRunIsTheSame) {
+    const std::string dir = test::scratch("robust_nofiles");
+    const std::string kase = damBreak(dir);
+    auto opts = [](bool files) {
+        return [files](solver::RunOptions& o) {
+            o.nsteps = 40;
+            o.tout = 1e-4;  // about one output per step
+            o.save_h5 = files;
+        };
+    };
+    const test::SolverRun h5 = test::runCpu(kase, dir + "/h5", 2, opts(true));
+    const test::SolverRun none = test::runCpu(kase, dir + "/none", 2, opts(false));
+    EXPECT_GT(h5.summary.outputs, 10);
+    EXPECT_EQ(none.summary.outputs, h5.summary.outputs);
+    EXPECT_EQ(none.summary.state_hash, h5.summary.state_hash);
+    EXPECT_FALSE(none.summary.blowup.has_value());
+    const test::SolverRun bad = test::runCpu(kase, dir + "/bad", 2, [](solver::RunOptions& o) {
+        o.dt_fixed = 0.002;
+        o.save_h5 = false;
+    });
+    ASSERT_TRUE(bad.summary.blowup.has_value());
+    EXPECT_FALSE(bad.summary.blowup->particles.empty());
+}
