@@ -239,7 +239,9 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
         continuing_ = restartContinuesIn(opt_.restart_file, opt_.outdir);
     }
     const CheckpointData* cont = continuing_ ? resume_.get() : nullptr;  // files continued
-    if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir);
+    // Part files behind the run on the GPU (the host thread waits for the device there); at
+    // once on the CPU, whose threads the write would slow.
+    if (opt_.save_h5) out_ = std::make_shared<Output>(opt_.outdir, backend_->name() == "gpu");
     if (!setup_.solid.empty())
         ledger_ = std::make_shared<Ledger>(opt_.outdir, cont ? cont->integer("ledger/offset") : -1,
                                            setup_.solid.contact_on);
@@ -396,33 +398,6 @@ void Simulation::writeParticleFiles(const HostState& st, double time, long long 
     if (!setup_.solid.empty()) {
         solidFields(st, disp, strain, broken, damage);
     }
-    if (opt_.save_h5) {
-        io::PartFrame f;
-        if (!disp.empty()) {
-            f.disp = disp.data();
-            f.strain = strain.data();
-            f.broken = broken.data();
-            f.damage = damage.data();
-        }
-        f.index = out_index_;
-        f.time = time;
-        f.step = step;
-        f.np = np;
-        f.pos = pos.data();
-        f.vel = vel.data();
-        f.rhop = rhop.data();
-        f.press = press.data();
-        f.id = case_.particles.id.data();
-        f.type = type.data();
-        f.mk = case_.particles.mk.data();
-        f.excluded = st.excl.data();
-        f.mass = case_.particles.mass.data();
-        f.constants = {case_.constants.h, case_.constants.dp, kernelName(case_.params.kernel),
-                       case_.constants.rhop0, case_.constants.dimensions, case_.constants.b};
-        const std::string rel = io::writePartH5(opt_.outdir, f);
-        out_->xdmf.add(rel, time, np, !disp.empty());
-        health_->written_file = rel;
-    }
     if (opt_.save_vtk) {
         ParticleSet p = case_.particles;
         for (std::size_t i = 0; i < np; ++i) {
@@ -445,6 +420,32 @@ void Simulation::writeParticleFiles(const HostState& st, double time, long long 
             extra.push_back({"damage", damage});
         }
         io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
+    }
+    if (opt_.save_h5) {  // last: its arrays move to the part writer
+        io::PartArrays a;
+        a.index = out_index_;
+        a.time = time;
+        a.step = step;
+        a.np = np;
+        a.pos = std::move(pos);
+        a.vel = std::move(vel);
+        a.rhop = std::move(rhop);
+        a.press = std::move(press);
+        a.type = std::move(type);
+        a.excluded = st.excl;
+        const bool solid = !disp.empty();
+        a.disp = std::move(disp);
+        a.strain = std::move(strain);
+        a.broken = std::move(broken);
+        a.damage = std::move(damage);
+        a.id = case_.particles.id.data();
+        a.mk = case_.particles.mk.data();
+        a.mass = case_.particles.mass.data();
+        a.constants = {case_.constants.h, case_.constants.dp, kernelName(case_.params.kernel),
+                       case_.constants.rhop0, case_.constants.dimensions, case_.constants.b};
+        const std::string rel = out_->parts.submit(std::move(a));
+        out_->xdmf.add(rel, time, np, solid);
+        health_->written_file = rel;
     }
 }
 

@@ -52,6 +52,7 @@ bool Simulation::terminateRequested() const {
 }
 
 void Simulation::saveCheckpoint(const LoopState& loop, const TimeStepper& stepper, const StepContext& ctx) {
+    if (out_) out_->parts.wait();  // HDF5 from one thread at a time (io/part_writer.h)
     CheckpointData d;
     d.texts["loop/case"] = case_.name;
     d.texts["loop/options"] = sum_.options;

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "io/part_writer.h"
 #include "io/xdmf_series.h"
 #include "solver/blowup_check.h"
 #include "solver/coupling_ledger.h"
@@ -16,7 +17,8 @@ namespace seaspring::solver {
 
 struct Simulation::Output {
     io::XdmfSeries xdmf;
-    explicit Output(const std::string& dir) : xdmf(dir) {}
+    io::PartWriter parts;  ///< the part files, written behind the run on the GPU (part_writer.h)
+    Output(const std::string& dir, bool background) : xdmf(dir), parts(dir, background) {}
 };
 
 struct Simulation::Ledger {

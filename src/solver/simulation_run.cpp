@@ -175,6 +175,7 @@ RunSummary Simulation::run() {
             break;
         }
     }
+    if (out_) out_->parts.wait();  // the last part file written (inside the loop's time)
     const double loop_time = progress.elapsed();
     timers.report(log_, step - step0);
     sum_.steps_run = step - step0;
@@ -185,6 +186,7 @@ RunSummary Simulation::run() {
 
 void Simulation::finish(double t, long long step, double loop_time, const StepCounters& counters) {
     if ((out_index_ == 0 || sum_.outputs == 0) && !sum_.blowup) output(t, step);
+    if (out_) out_->parts.wait();  // every part file written (or its error thrown) before the summary
     if (gauges_) {
         gauges_->flush();
         sum_.gauge_rows = gauges_->rows();

@@ -24,6 +24,7 @@
 #include "part_particles.h"
 #include "io/h5_util.h"
 #include "io/part_output.h"
+#include "io/part_writer.h"
 #include "io/xdmf_series.h"
 
 namespace seaspring::io {
@@ -481,4 +482,75 @@ TEST(XdmfSeries, ErrorsKeepTheSeriesConsistent) {
 }
 
 }  // namespace
+namespace {
+
+/// The particles of makeParticles as a part writer's arrays (ids, MKs and masses borrowed).
+PartArrays arraysOf(const Particles& p, int index, double time) {
+    PartArrays a;
+    a.index = index;
+    a.time = time;
+    a.step = index;
+    a.np = p.id.size();
+    a.pos = p.pos;
+    a.vel = p.vel;
+    a.rhop = p.rhop;
+    a.press = p.press;
+    a.type = p.type;
+    a.excluded = p.excluded;
+    a.id = p.id.data();
+    a.mk = p.mk.data();
+    a.mass = p.mass.data();
+    a.constants = p.constants;
+    return a;
+}
+
+}  // namespace
+
+// The part writer, in the background and at once: the same files, in order, byte for byte.
+TEST(PartWriter, BackgroundFilesEqualTheImmediateOnes) {
+    const Scratch scratch;
+    const Particles p = makeParticles();
+    for (bool background : {false, true}) {
+        const std::string out = (fs::path(scratch.dir) / (background ? "bg" : "now")).string();
+        PartWriter w(out, background);
+        for (int k = 0; k < 4; ++k) {
+            PartArrays a = arraysOf(p, k, 0.1 * k);  // ids, MKs, masses borrowed from p
+            a.rhop[0] = 1000.f + float(k);             // each output its own values
+            EXPECT_EQ(w.submit(std::move(a)), partFileName(k));
+        }
+        w.wait();
+        for (int k = 0; k < 4; ++k) {
+            const PartData d = readPartH5((fs::path(out) / partFileName(k)).string());
+            EXPECT_EQ(d.rhop[0], 1000.f + float(k)) << (background ? "background" : "at once") << ", file " << k;
+            EXPECT_EQ(d.step, k);
+            EXPECT_TRUE(sameBytes(d.pos, p.pos));
+            EXPECT_EQ(d.mk, p.mk);
+            EXPECT_TRUE(sameBytes(d.mass, p.mass));
+        }
+    }
+}
+
+// A write that fails in the background is not lost: its error comes out of the next submit or
+// of wait(), naming the file.
+TEST(PartWriter, ABackgroundErrorIsThrownByTheNextCall) {
+    const Scratch scratch;
+    const Particles p = makeParticles();
+    const std::string out = (fs::path(scratch.dir) / "run").string();
+    fs::create_directories(fs::path(out) / "data/part_0000.h5.tmp");  // blocks file 0
+    {
+        PartWriter w(out, true);
+        w.submit(arraysOf(p, 0, 0.0));
+        const std::string msg = errorOf([&] { w.wait(); });
+        EXPECT_HAS(msg, "data/part_0000.h5.tmp: cannot create the part file");
+        w.wait();  // reported once
+    }
+    fs::create_directories(fs::path(out) / "data/part_0000.h5.tmp");  // the failed write removed it
+    {
+        PartWriter w(out, true);
+        w.submit(arraysOf(p, 0, 0.0));
+        const std::string msg = errorOf([&] { w.submit(arraysOf(p, 1, 0.1)); });
+        EXPECT_HAS(msg, "data/part_0000.h5.tmp: cannot create the part file");
+    }
+}
+
 }  // namespace seaspring::io
