@@ -32,6 +32,19 @@ std::string canonical(const std::string& p) {
     return ec ? p : c.string();
 }
 
+/// The -cellmode name of an option line's "cells of X" (describePhysics), or "" without one.
+std::string cellModeOf(const std::string& options) {
+    static const char* const kLabels[][2] = {{"2h", "full"}, {"h", "h"}, {"2h/3", "third"}, {"h/2", "quarter"}, {"dp", "dp"}};
+    const std::string key = "cells of ";
+    const std::size_t at = options.find(key);
+    if (at == std::string::npos) return "";
+    const std::size_t b = at + key.size(), e = options.find_first_of(" ,", b);
+    const std::string label = options.substr(b, e == std::string::npos ? std::string::npos : e - b);
+    for (const auto& l : kLabels)
+        if (label == l[0]) return l[1];
+    return "";
+}
+
 }  // namespace
 
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir) {
@@ -91,9 +104,15 @@ Simulation::LoopState Simulation::resume(TimeStepper& stepper, StepContext& ctx)
     if (d.text("loop/case") != case_.name)
         throw Error(d.source + ": restart file of case '" + d.text("loop/case") + "', this run is case '" + case_.name +
                     "'");
-    if (d.text("loop/options") != sum_.options)
+    if (d.text("loop/options") != sum_.options) {
+        // The cell mode is the one an option line may differ in without any option given: the
+        // default changed (cells of dp where 1.5 dp < h < 2 dp, twenty-first session).
+        const std::string was = cellModeOf(d.text("loop/options")), now = cellModeOf(sum_.options);
+        const std::string hint = !was.empty() && was != now ? "; its cells differ: continue it with -cellmode:" + was : "";
         throw Error(d.source + ": restart file written with the options\n  " + d.text("loop/options") +
-                    "\nthis run has\n  " + sum_.options + "\n(a restart continues the same run: give the same options)");
+                    "\nthis run has\n  " + sum_.options + "\n(a restart continues the same run: give the same options" +
+                    hint + ")");
+    }
     LoopState loop;
     loop.t = d.real("loop/t");
     loop.step = d.integer("loop/step");

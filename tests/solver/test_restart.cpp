@@ -178,6 +178,12 @@ TEST(Restart, BadRestartsNameTheFile) {
     EXPECT_NE(p.status, 0);
     EXPECT_NE(p.out.find(file), std::string::npos) << p.out;
     EXPECT_NE(p.out.find("same options"), std::string::npos) << p.out;
+    EXPECT_EQ(p.out.find("cells differ"), std::string::npos) << p.out;  // the same cells
+    // Other cells (as a file written before -cellmode:auto changed): the option that continues it.
+    p = runSeaspring("-cpu " + std::string(kRun) + "-cellmode:third -restart:" + file + " " + antociCase() + " " + dir +
+                     "/o5");
+    EXPECT_NE(p.status, 0);
+    EXPECT_NE(p.out.find("its cells differ: continue it with -cellmode:h)"), std::string::npos) << p.out;
     // Missing, and not a restart file.
     p = runSeaspring("-cpu " + std::string(kRun) + "-restart:" + dir + "/none.h5 " + antociCase() + " " + dir + "/o2");
     EXPECT_NE(p.status, 0);
