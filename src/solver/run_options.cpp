@@ -24,6 +24,16 @@
 
 namespace seaspring::solver {
 
+const char* cellModeName(int cell_div) {
+    static const char* const kNames[kCellModes] = {"auto", "full", "h", "third", "quarter", "dp"};
+    return cell_div >= 0 && cell_div < kCellModes ? kNames[cell_div] : nullptr;
+}
+
+const char* cellSizeLabel(int cell_div) {
+    static const char* const kLabels[kCellModes] = {"?", "2h", "h", "2h/3", "h/2", "dp"};
+    return cell_div >= 0 && cell_div < kCellModes ? kLabels[cell_div] : nullptr;
+}
+
 namespace {
 
 const char* kUsage = "seaspring [options] OUTDIR/NAME OUTDIR";
@@ -245,10 +255,9 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (g.value.empty()) usageError(g.arg + ": the restart file is missing");
             o.restart_file = g.value;
         } else if (name == "cellmode") {
-            static const char* const kModes[] = {"auto", "full", "h", "third", "quarter", "dp"};  // index = cell_div
             o.cell_div = -1;
-            for (int k = 0; k < 6; ++k)
-                if (g.value == kModes[k]) o.cell_div = k;
+            for (int k = 0; k < kCellModes; ++k)
+                if (g.value == cellModeName(k)) o.cell_div = k;
             if (o.cell_div < 0)
                 usageError(g.arg + ": \"" + g.value +
                            "\" is not a cell mode (supported: auto, full, h, third, quarter, dp)");

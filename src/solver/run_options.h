@@ -20,6 +20,13 @@
 
 namespace seaspring::solver {
 
+/// The cell modes by cell_div (RunOptions::cell_div): 0 auto, 1 full, 2 h, 3 third, 4 quarter,
+/// 5 dp (physics::kCellDivSpacing). cellModeName: the -cellmode name; cellSizeLabel: the cell
+/// size as the physics line writes it ("cells of h/2"; "?" for auto). Both nullptr outside 0..5.
+constexpr int kCellModes = 6;
+const char* cellModeName(int cell_div);
+const char* cellSizeLabel(int cell_div);
+
 /// The most OpenMP threads -threads accepts (libgomp fails far above the core counts of any
 /// machine).
 constexpr int kMaxThreads = 1024;

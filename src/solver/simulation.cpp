@@ -46,11 +46,10 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     static const char* ddt[] = {"no DDT", "DDT Molteni", "DDT Fourtakas", "DDT Fourtakas full"};
     s << ", " << ddt[p.density_dt];
     if (p.density_dt > 0) s << " delta=" << p.density_dt_value;
-    static const char* const kCells[] = {"?", "2h", "h", "2h/3", "h/2", "dp"};
     static const char* const kSlip[] = {"?", "vel=0", "no-slip", "free-slip"};
     if (p.boundary == 2) s << ", mDBC " << kSlip[p.slip_mode >= 1 && p.slip_mode <= 3 ? p.slip_mode : 0];
     else s << ", DBC";
-    s << ", CFL " << p.cfl_number << ", cells of " << kCells[cell_div >= 1 && cell_div <= 5 ? cell_div : 0];
+    s << ", CFL " << p.cfl_number << ", cells of " << cellSizeLabel(cell_div >= 1 && cell_div < kCellModes ? cell_div : 0);
     if (skin > 0) s << " with a skin of " << skin << " cell";
     if (pair_lanes > 1) s << ", " << pair_lanes << " pair lanes";
     return s.str();

@@ -34,14 +34,13 @@ std::string canonical(const std::string& p) {
 
 /// The -cellmode name of an option line's "cells of X" (describePhysics), or "" without one.
 std::string cellModeOf(const std::string& options) {
-    static const char* const kLabels[][2] = {{"2h", "full"}, {"h", "h"}, {"2h/3", "third"}, {"h/2", "quarter"}, {"dp", "dp"}};
     const std::string key = "cells of ";
     const std::size_t at = options.find(key);
     if (at == std::string::npos) return "";
     const std::size_t b = at + key.size(), e = options.find_first_of(" ,", b);
     const std::string label = options.substr(b, e == std::string::npos ? std::string::npos : e - b);
-    for (const auto& l : kLabels)
-        if (label == l[0]) return l[1];
+    for (int d = 1; d < kCellModes; ++d)
+        if (label == cellSizeLabel(d)) return cellModeName(d);
     return "";
 }
 
