@@ -11,6 +11,7 @@
 # Cases: s4   SPHERIC Test 2 at dp 0.006 (4,360,716 particles), S4STEPS (150) steps from the
 #             start, symplectic + Wendland + DDT 3 + the case's artificial viscosity: ns/particle/step
 #        s1   the same at dp 0.01 (1,116,258), S1STEPS (300) steps
+#        s13  the same at dp 0.004 (13,292,664), S13STEPS (80) steps
 #        late the 1.12 M case, 300 steps from a restart file at t = 0.6 s (needs LATE=1)
 #        sps  s4 with -viscolamsps:1e-6
 #        l3   FlexStruc Liao 3D as shipped, first 0.02 s: loop seconds (needs LIAO=1 and
@@ -39,6 +40,7 @@ nvidia-smi --query-gpu=name --format=csv,noheader
 G=vb/$first/gencase
 [[ -f $W/s1m.h5 ]] || $G build-dev/shared-cases/Spheric2Dam_01M.xml $W/s1m >/dev/null
 [[ -f $W/s4m.h5 ]] || $G build-dev/shared-cases/Spheric2Dam_01M.xml $W/s4m -dp:0.006 >/dev/null
+[[ " ${CASES:-} " == *" s13 "* && ! -f $W/s13m.h5 ]] && $G build-dev/shared-cases/Spheric2Dam_01M.xml $W/s13m -dp:0.004 >/dev/null
 A="-gpu -sv:none -progress:0 -symplectic -wendland -ddt:3"
 if [[ -n "${LATE:-}" ]]; then
   [[ -f $W/late/restart.h5 ]] || vb/$first/seaspring $A -tmax:0.6 -checkpoint:0.6 $W/s1m $W/late > $W/late.log 2>&1
@@ -67,6 +69,7 @@ for r in $(seq 1 ${ROUNDS:-2}); do
    case $c in
     s4) $B $A $X -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
     s1) $B $A $X -nsteps:${S1STEPS:-300} $W/s1m $o >/dev/null 2>&1; k=ns;;
+    s13) $B $A $X -nsteps:${S13STEPS:-80} $W/s13m $o >/dev/null 2>&1; k=ns;;
     sps) $B $A $X -viscolamsps:1e-6 -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
     late) $B $A $X -restart:$W/late/restart.h5 -nsteps:$((LSTEP+300)) $W/s1m $o >/dev/null 2>&1; k=ns;;
     l3) $B -gpu -sv:none -progress:0 $X -tmax:0.02 $W/l3d $o >/dev/null 2>&1; k=loop;;

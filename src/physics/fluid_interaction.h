@@ -29,6 +29,14 @@
 namespace seaspring::physics {
 
 
+/// fluidPairsInRow loads the next candidate's PosCell before the test and pair of this one, so
+/// that its latency overlaps them (the same candidates, pairs and order, so the same bits), for
+/// the laminar families' boundary block: there it pays (NVIDIA H200: SPHERIC laminar+SPS 0.989,
+/// FlexStruc Liao 3D 0.986); in the artificial-viscosity fluid block it costs registers (56 ->
+/// 64) and 3% (docs/performance-large.md, twenty-second session).
+template <class Opt, bool kBound>
+constexpr bool kLoadAhead = kBound && Opt::visco != Viscosity::Artificial;
+
 /// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound), `par`
 /// and `cax` as forEachCandidateRow gives them: the direct loop (the GPU's path).
 /// Pair lanes: `lane` takes the candidates j of the row whose number in the block, `seen` + (j -
@@ -39,11 +47,29 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std
                                          const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                                          const InteractionInputs& in, const FluidConstants& c,
                                          const CellGrid& g, FluidAccum& acc) {
-    for (std::uint32_t j = pb + ((lane - seen) & (lanes - 1u)); j < pe; j += lanes) {
-        float drx, dry, drz;
-        const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
-        if (!isNeighbour(rr2, c)) continue;
-        fluidPair<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
+    std::uint32_t j = pb + ((lane - seen) & (lanes - 1u));
+    if constexpr (!kLoadAhead<Opt, kBound>) {
+        for (; j < pe; j += lanes) {
+            float drx, dry, drz;
+            const float rr2 = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
+            if (!isNeighbour(rr2, c)) continue;
+            fluidPair<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
+        }
+    } else {
+        if (j >= pe) return;
+        Float4 psb = in.poscell[j];
+        for (;;) {
+            const std::uint32_t jn = j + lanes;
+            Float4 next = psb;
+            if (jn < pe) next = in.poscell[jn];  // kLoadAhead
+            float drx, dry, drz;
+            const float rr2 = pairOffset<Opt::dim>(par, psb, cax, g, drx, dry, drz);
+            if (isNeighbour(rr2, c))
+                fluidPair<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c, acc);
+            if (jn >= pe) break;
+            j = jn;
+            psb = next;
+        }
     }
 }
 
