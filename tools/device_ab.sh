@@ -14,6 +14,7 @@
 #        s13  the same at dp 0.004 (13,292,664), S13STEPS (80) steps
 #        late the 1.12 M case, 300 steps from a restart file at t = 0.6 s (needs LATE=1)
 #        sps  s4 with -viscolamsps:1e-6
+#        s4h5 s4's first 0.02 s writing part files (-sv:h5; three outputs): loop seconds
 #        l3   FlexStruc Liao 3D as shipped, first 0.02 s: loop seconds (needs LIAO=1 and
 #             build-dev/shared)
 #        db3  DualSPHysics' 3D dam break CaseDambreak_Def.xml at dp 0.004 (about 1.6 M particles,
@@ -28,7 +29,7 @@
 # (the build it runs, default NAME), e.g. VARS="third dp" BIN_third=new BIN_dp=new
 # ARGS_third=-cellmode:third ARGS_dp=-cellmode:dp with build-dev/v_new.tar.xz.
 # Env: VARS, CASES (default "s4 s1"), ROUNDS (2), DEADLINE (500 s: no run starts after it),
-#      OUT (ab.csv: case,var,round,value,hash).
+#      OUT (ab.csv: case,var,round,value,hash,output_s — run.json output_time_s).
 set -u
 export LD_LIBRARY_PATH=$PWD/build-dev/lib
 binof() { local b="BIN_$1"; echo "${!b:-$1}"; }
@@ -58,8 +59,8 @@ if [[ " ${CASES:-} " == *" db3"* ]]; then
   [[ -f $W/db3.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreak_Def.xml $W/db3 -dp:0.004 >/dev/null 2>&1
   [[ -f $W/db3l.h5 ]] || vb/$first/gencase build-dev/shared/dualsphysics-cases/CaseDambreak_Def.xml $W/db3l >/dev/null 2>&1
 fi
-echo "case,var,round,value,hash" > $OUT/ab.csv
-rec() { python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); k=sys.argv[2]; print(r["ns_per_particle_step"] if k=="ns" else r["loop_time_s"], r.get("state_hash",""))' $1/run.json $2; }
+echo "case,var,round,value,hash,output_s" > $OUT/ab.csv
+rec() { python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); k=sys.argv[2]; print(r["ns_per_particle_step"] if k=="ns" else r["loop_time_s"], r.get("state_hash",""), r.get("output_time_s",""))' $1/run.json $2; }
 t_end=$(( $(date +%s) + ${DEADLINE:-500} ))
 for r in $(seq 1 ${ROUNDS:-2}); do
  for c in ${CASES:-s4 s1}; do
@@ -71,6 +72,7 @@ for r in $(seq 1 ${ROUNDS:-2}); do
     s1) $B $A $X -nsteps:${S1STEPS:-300} $W/s1m $o >/dev/null 2>&1; k=ns;;
     s13) $B $A $X -nsteps:${S13STEPS:-80} $W/s13m $o >/dev/null 2>&1; k=ns;;
     sps) $B $A $X -viscolamsps:1e-6 -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
+    s4h5) $B ${A/-sv:none/-sv:h5} $X -tmax:0.02 $W/s4m $o >/dev/null 2>&1; k=loop;;
     late) $B $A $X -restart:$W/late/restart.h5 -nsteps:$((LSTEP+300)) $W/s1m $o >/dev/null 2>&1; k=ns;;
     l3) $B -gpu -sv:none -progress:0 $X -tmax:0.02 $W/l3d $o >/dev/null 2>&1; k=loop;;
     db3) $B -gpu -sv:none -progress:0 $X -nsteps:${DB3STEPS:-400} $W/db3 $o >/dev/null 2>&1; k=ns;;
@@ -82,7 +84,7 @@ for r in $(seq 1 ${ROUNDS:-2}); do
     rtd) $B -gpu -sv:none -progress:0 $X -tmax:0.3 $W/rtd $o >/dev/null 2>&1; k=loop;;
    esac
    [[ -f $o/run.json ]] || { echo "$c,$v,$r: no run.json"; continue; }
-   read val h < <(rec $o $k); echo "$c,$v,$r,$val,$h" | tee -a $OUT/ab.csv
+   read val h os < <(rec $o $k); echo "$c,$v,$r,$val,$h,$os" | tee -a $OUT/ab.csv
   done
  done
 done

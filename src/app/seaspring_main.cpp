@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
         std::unique_ptr<solver::Backend> backend;
         std::string why;
         if (opt.backend != solver::RunOptions::Backend::Cpu) {
-            backend = solver::makeCudaBackend(opt.gpu_id, why);
+            backend = solver::makeCudaBackend(opt.gpu_id, why, opt.threads);
             if (!backend && opt.backend == solver::RunOptions::Backend::Gpu) {
                 run_log->error(std::cerr, "seaspring: -gpu requested but " + why + "\n");
                 return 2;

@@ -4,7 +4,7 @@
 #include "solver/backend.h"
 
 namespace seaspring::solver {
-std::unique_ptr<Backend> makeCudaBackend(int, std::string& why) {
+std::unique_ptr<Backend> makeCudaBackend(int, std::string& why, int) {
     why = "this seaspring was built without the CUDA backend (nvcc was not found at configure time)";
     return nullptr;
 }

@@ -30,6 +30,7 @@ public:
     std::string name() const { return "cpu"; }
     std::string deviceName() const;
     int threads() const { return threads_; }
+    int hostThreads() const { return threads_; }
 
     /// f(i) for i in [b, e), spread as Launch says (launch.h).
     template <class Launch, class F>

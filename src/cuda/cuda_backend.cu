@@ -8,7 +8,7 @@
 #include "solver/engine.h"
 
 namespace seaspring::solver {
-std::unique_ptr<Backend> makeCudaBackend(int device, std::string& why) {
+std::unique_ptr<Backend> makeCudaBackend(int device, std::string& why, int host_threads) {
     int count = 0;
     const cudaError_t err = cudaGetDeviceCount(&count);
     if (err != cudaSuccess || count == 0) {
@@ -21,6 +21,6 @@ std::unique_ptr<Backend> makeCudaBackend(int device, std::string& why) {
               std::to_string(count - 1) + ")";
         return nullptr;
     }
-    return std::make_unique<Engine<cuda::CudaExec>>(cuda::CudaExec(device));
+    return std::make_unique<Engine<cuda::CudaExec>>(cuda::CudaExec(device, host_threads));
 }
 }  // namespace seaspring::solver

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace seaspring::cuda {
 
@@ -40,7 +41,9 @@ int bondLaneShiftFromEnv() {
 }
 }  // namespace
 
-CudaExec::CudaExec(int device) {
+CudaExec::CudaExec(int device, int host_threads) {
+    const unsigned cores = std::thread::hardware_concurrency();
+    host_threads_ = host_threads > 0 ? host_threads : (cores > 0 ? int(cores) : 1);
     SEASPRING_CUDA_CHECK(cudaSetDevice(device));
     cudaDeviceProp prop{};
     SEASPRING_CUDA_CHECK(cudaGetDeviceProperties(&prop, device));

@@ -197,10 +197,12 @@ public:
     /// (physics::fluidPairsInRow; solver::FluidLanesPass).
     static constexpr bool kCompactPairs = false;
 
-    explicit CudaExec(int device);
+    /// host_threads <= 0: every core (std::thread::hardware_concurrency).
+    CudaExec(int device, int host_threads);
     std::string name() const { return "gpu"; }
     std::string deviceName() const { return name_; }
     int threads() const { return 1; }
+    int hostThreads() const { return host_threads_; }
 
     template <class Launch, class F>
     void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
@@ -336,6 +338,7 @@ private:
 
     static constexpr std::size_t kReadbackBytes = 64;
     std::string name_;
+    int host_threads_ = 1;
     std::uint32_t reduce_blocks_ = 1;
     struct FreeHost {
         void operator()(void* p) const { cudaFreeHost(p); }

@@ -42,13 +42,21 @@ PartWriter::~PartWriter() {
 std::string PartWriter::submit(PartArrays a) {
     wait();
     const std::string rel = partFileName(a.index);
+    last_ = std::make_shared<PartArrays>(std::move(a));
     if (!background_) {
-        writePartH5(outdir_, frameOf(a));
+        writePartH5(outdir_, frameOf(*last_));
         return rel;
     }
-    auto job = std::make_shared<PartArrays>(std::move(a));
-    pending_ = std::async(std::launch::async, [dir = outdir_, job] { writePartH5(dir, frameOf(*job)); });
+    pending_ = std::async(std::launch::async, [dir = outdir_, job = last_] { writePartH5(dir, frameOf(*job)); });
     return rel;
+}
+
+PartArrays PartWriter::takeSpare() {
+    wait();
+    PartArrays spare;
+    if (last_) spare = std::move(*last_);
+    last_.reset();
+    return spare;
 }
 
 void PartWriter::wait() {

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,11 +61,17 @@ public:
     std::string submit(PartArrays a);
     /// Waits until every submitted file is written; throws the error of one that failed.
     void wait();
+    /// The arrays of the last file written (after wait()), for the next output to fill in
+    /// place: their pages are mapped already, where fresh vectors of an output's size (about
+    /// 45 bytes a particle) would be cleared page by page by the kernel. Empty at first; the
+    /// caller resizes what it uses.
+    PartArrays takeSpare();
 
 private:
     std::string outdir_;
     bool background_;
     std::future<void> pending_;
+    std::shared_ptr<PartArrays> last_;  ///< the arrays of the file submitted last
 };
 
 }  // namespace seaspring::io

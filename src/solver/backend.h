@@ -116,6 +116,9 @@ public:
     virtual std::string name() const = 0;        ///< "cpu" or "gpu"
     virtual std::string deviceName() const = 0;  ///< processor or GPU name
     virtual int threads() const = 0;             ///< OpenMP threads (1 for the GPU)
+    /// Host threads for the bulk host work of outputs (the state into id order, the part
+    /// file's arrays): the OpenMP threads on the CPU; beside a GPU, -threads or every core.
+    virtual int hostThreads() const = 0;
 
     virtual void init(const BackendSetup& setup) = 0;
     /// Sorts the active particles by cell (moving boundaries too when there are any), drops
@@ -209,6 +212,6 @@ public:
 
 std::unique_ptr<Backend> makeCpuBackend(int threads);
 /// nullptr with `why` filled when the CUDA backend is not built or no device exists.
-std::unique_ptr<Backend> makeCudaBackend(int device, std::string& why);
+std::unique_ptr<Backend> makeCudaBackend(int device, std::string& why, int host_threads = 0);
 
 }  // namespace seaspring::solver

@@ -45,6 +45,7 @@ public:
     std::string name() const override { return exec_.name(); }
     std::string deviceName() const override { return exec_.deviceName(); }
     int threads() const override { return exec_.threads(); }
+    int hostThreads() const override { return exec_.hostThreads(); }
 
     void init(const BackendSetup& s) override {
         if (s.pair_lanes == 0 || s.pair_lanes > physics::kMaxPairLanes || (s.pair_lanes & (s.pair_lanes - 1u)) != 0)
@@ -370,7 +371,7 @@ private:
     /// (downloadInIdOrder, through the staging buffers the engine keeps).
     void downloadIdOrder(HostParticles& out, unsigned any, unsigned none) {
         exec_.synchronize();
-        downloadInIdOrder(p_, ids_host_, stage_, out, any, none);
+        downloadInIdOrder(p_, ids_host_, stage_, out, any, none, exec_.hostThreads());
     }
 
     ForceArgs forceArgs() {

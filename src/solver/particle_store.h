@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/id_order.h"
 #include "physics/particle_fields.h"
 #include "physics/particle_updates.h"
 #include "solver/buffers.h"
@@ -90,10 +91,11 @@ void forEachFieldPair(ParticleStore<Buf>& s, HostParticles& h, F&& f) {
 /// `out` in id order (the work of the device, if any, finished). Each field goes through one
 /// staging buffer the caller keeps (`stage`; `ids` takes the sorted ids), so a download every
 /// -blowupcheck steps allocates nothing and touches no fresh pages, and `out`'s vectors keep
-/// their capacity when the caller reuses it.
+/// their capacity when the caller reuses it. The reordering runs on `threads` host threads
+/// (scatterToIdOrder: the same result on any number).
 template <template <typename> class Buf>
 void downloadInIdOrder(ParticleStore<Buf>& s, std::vector<std::uint32_t>& ids, std::vector<unsigned char>& stage,
-                       HostParticles& out, unsigned any, unsigned none) {
+                       HostParticles& out, unsigned any, unsigned none, int threads) {
     copyToHost(s.id, ids);
     const std::uint32_t* id = ids.data();
     forEachFieldPair(s, out, [&](auto& buf, auto& host, unsigned flags) {
@@ -103,8 +105,7 @@ void downloadInIdOrder(ParticleStore<Buf>& s, std::vector<std::uint32_t>& ids, s
         if (stage.size() < n * sizeof(T)) stage.resize(n * sizeof(T));
         copyToHostBytes(buf, stage.data());
         host.resize(n);
-        const unsigned char* b = stage.data();
-        for (std::size_t i = 0; i < n; ++i) std::memcpy(&host[id[i]], b + i * sizeof(T), sizeof(T));
+        scatterToIdOrder(stage.data(), reinterpret_cast<unsigned char*>(host.data()), sizeof(T), id, n, threads);
     });
 }
 

@@ -46,6 +46,7 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);
     j.value("outputs", s.outputs);
+    j.value("output_time_s", s.output_time);
     j.value("gauge_rows", s.gauge_rows);
     if (s.nsolid > 0) {
         j.beginObject("solids");
@@ -121,6 +122,11 @@ void printSummary(std::ostream& os, const RunSummary& s) {
     if (!s.restarted_from.empty()) {  // the rates above are of this run's steps
         std::snprintf(line, sizeof line, "  (%lld of them in this run, from t=%.6g s: %s)\n", s.steps_run, s.restart_time,
                       s.restarted_from.c_str());
+        os << line;
+    }
+    if (s.outputs > 0) {
+        std::snprintf(line, sizeof line, "Outputs: %d in %.3f s (state downloads, checks, part files)\n", s.outputs,
+                      s.output_time);
         os << line;
     }
     std::snprintf(line, sizeof line,

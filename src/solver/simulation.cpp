@@ -3,6 +3,7 @@
 /// \brief A run's setup (backend data, cell division, physics line) and its outputs (see simulation.h).
 #include "solver/simulation.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -351,6 +352,12 @@ bool Simulation::outputNeedsState() const {
 }
 
 bool Simulation::output(double time, long long step) {
+    const auto t0 = std::chrono::steady_clock::now();
+    struct AddTime {  // to sum_.output_time, whichever way the output ends
+        std::chrono::steady_clock::time_point t0;
+        double& sum;
+        ~AddTime() { sum += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+    } add{t0, sum_.output_time};
     Health& h = *health_;
     if (!outputNeedsState() && !backend_->forcesAhead() && backend_->notFiniteCount() == 0) {
         noteOutput(time);  // nothing reads the state, and no particle is not finite
@@ -377,11 +384,23 @@ void Simulation::writeOutput(const HostState& st, double time, long long step, b
 
 void Simulation::writeParticleFiles(const HostState& st, double time, long long step) {
     const std::size_t np = st.pos.size();
-    std::vector<double> pos(3 * np);
-    std::vector<float> vel(3 * np), rhop(np), press(np);
-    std::vector<std::uint8_t> type(np);
+    // The arrays of the last part file, refilled in place (io::PartWriter::takeSpare), on the
+    // backend's host threads (each element on its own: the same values on any number).
+    io::PartArrays a = opt_.save_h5 ? out_->parts.takeSpare() : io::PartArrays{};
+    a.pos.resize(3 * np);
+    a.vel.resize(3 * np);
+    a.rhop.resize(np);
+    a.press.resize(np);
+    a.type.resize(np);
+    std::vector<double>& pos = a.pos;
+    std::vector<float>&vel = a.vel, &rhop = a.rhop, &press = a.press;
+    std::vector<std::uint8_t>& type = a.type;
     const float b = setup_.fluid.cteb, ovrho0 = setup_.fluid.ovrhop0;
-    for (std::size_t i = 0; i < np; ++i) {
+    const int threads = backend_->hostThreads();
+    const long long n = static_cast<long long>(np);
+    const ParticleType* ptype = case_.particles.type.data();
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+    for (long long i = 0; i < n; ++i) {
         pos[3 * i] = st.pos[i].x;
         pos[3 * i + 1] = st.pos[i].y;
         pos[3 * i + 2] = st.pos[i].z;
@@ -390,10 +409,10 @@ void Simulation::writeParticleFiles(const HostState& st, double time, long long 
         vel[3 * i + 2] = st.velrho[i].z;
         rhop[i] = st.velrho[i].w;
         press[i] = physics::taitPressure7(rhop[i], b, ovrho0);
-        type[i] = std::uint8_t(case_.particles.type[i]);
+        type[i] = std::uint8_t(ptype[i]);
     }
-    std::vector<float> disp, strain, damage;
-    std::vector<std::uint8_t> broken;
+    std::vector<float>&disp = a.disp, &strain = a.strain, &damage = a.damage;
+    std::vector<std::uint8_t>& broken = a.broken;
     if (!setup_.solid.empty()) {
         solidFields(st, disp, strain, broken, damage);
     }
@@ -421,22 +440,12 @@ void Simulation::writeParticleFiles(const HostState& st, double time, long long 
         io::writeParticlesVtu((fs::path(opt_.outdir) / "vtk" / name).string(), p, extra);
     }
     if (opt_.save_h5) {  // last: its arrays move to the part writer
-        io::PartArrays a;
         a.index = out_index_;
         a.time = time;
         a.step = step;
         a.np = np;
-        a.pos = std::move(pos);
-        a.vel = std::move(vel);
-        a.rhop = std::move(rhop);
-        a.press = std::move(press);
-        a.type = std::move(type);
         a.excluded = st.excl;
         const bool solid = !disp.empty();
-        a.disp = std::move(disp);
-        a.strain = std::move(strain);
-        a.broken = std::move(broken);
-        a.damage = std::move(damage);
         a.id = case_.particles.id.data();
         a.mk = case_.particles.mk.data();
         a.mass = case_.particles.mass.data();

@@ -40,6 +40,7 @@ struct RunSummary {
     double ns_per_particle_step = 0;
     double dt_last = 0;
     int outputs = 0;
+    double output_time = 0;    ///< wall time of the outputs: state downloads, checks, part files [s]
     long long gauge_rows = 0;  ///< CSV rows written by the gauges
     std::string stop_reason;
     std::string state_hash;

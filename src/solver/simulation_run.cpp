@@ -175,7 +175,11 @@ RunSummary Simulation::run() {
             break;
         }
     }
-    if (out_) out_->parts.wait();  // the last part file written (inside the loop's time)
+    if (out_) {  // the last part file written (inside the loop's time)
+        const auto t0 = Clock::now();
+        out_->parts.wait();
+        sum_.output_time += std::chrono::duration<double>(Clock::now() - t0).count();
+    }
     const double loop_time = progress.elapsed();
     timers.report(log_, step - step0);
     sum_.steps_run = step - step0;

@@ -15,11 +15,13 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
 #include "core/error.h"
+#include "core/id_order.h"
 #include "error_expect.h"
 #include "part_particles.h"
 #include "io/h5_util.h"
@@ -530,6 +532,28 @@ TEST(PartWriter, BackgroundFilesEqualTheImmediateOnes) {
     }
 }
 
+// The next output refills the last file's arrays (no fresh pages): takeSpare gives them back
+// once written, with their values and sizes, and then nothing until the next submit.
+TEST(PartWriter, TheSpareArraysAreTheLastFilesOnceWritten) {
+    const Scratch scratch;
+    const Particles p = makeParticles();
+    for (bool background : {false, true}) {
+        PartWriter w((fs::path(scratch.dir) / (background ? "bg" : "now")).string(), background);
+        EXPECT_TRUE(w.takeSpare().pos.empty());
+        PartArrays a = arraysOf(p, 0, 0.0);
+        a.rhop[0] = 1234.f;
+        const std::vector<double> pos = a.pos;
+        w.submit(std::move(a));
+        PartArrays s = w.takeSpare();
+        EXPECT_EQ(s.rhop.size(), p.id.size());
+        EXPECT_EQ(s.rhop[0], 1234.f);
+        EXPECT_TRUE(sameBytes(s.pos, pos));
+        EXPECT_TRUE(w.takeSpare().pos.empty());
+        const PartData d = readPartH5((fs::path(scratch.dir) / (background ? "bg" : "now") / partFileName(0)).string());
+        EXPECT_EQ(d.rhop[0], 1234.f);  // written before it was handed back
+    }
+}
+
 // A write that fails in the background is not lost: its error comes out of the next submit or
 // of wait(), naming the file.
 TEST(PartWriter, ABackgroundErrorIsThrownByTheNextCall) {
@@ -551,6 +575,26 @@ TEST(PartWriter, ABackgroundErrorIsThrownByTheNextCall) {
         const std::string msg = errorOf([&] { w.submit(arraysOf(p, 1, 0.1)); });
         EXPECT_HAS(msg, "data/part_0000.h5.tmp: cannot create the part file");
     }
+}
+
+// The state into id order on several threads (core/id_order.h): every element size the
+// particle fields have (and one they do not), one and three threads, against the plain loop.
+TEST(IdOrder, ScatterEqualsThePlainLoopOnAnyThreads) {
+    const std::size_t n = 1003;
+    std::vector<std::uint32_t> id(n);
+    for (std::size_t i = 0; i < n; ++i) id[i] = std::uint32_t((i * 389u + 17u) % n);  // 389 is prime to 1003
+    for (std::size_t elem : {1u, 4u, 12u, 16u, 24u, 40u}) {
+        std::vector<unsigned char> src(n * elem), want(n * elem);
+        for (std::size_t k = 0; k < src.size(); ++k) src[k] = static_cast<unsigned char>(k * 131u + elem);
+        for (std::size_t i = 0; i < n; ++i) std::memcpy(&want[id[i] * elem], &src[i * elem], elem);
+        for (int threads : {1, 3}) {
+            std::vector<unsigned char> got(n * elem, 0);
+            scatterToIdOrder(src.data(), got.data(), elem, id.data(), n, threads);
+            EXPECT_EQ(got, want) << elem << " bytes, " << threads << " threads";
+        }
+    }
+    std::vector<unsigned char> one(1);
+    EXPECT_THROW(scatterToIdOrder(one.data(), one.data(), 0, id.data(), 0, 1), std::invalid_argument);
 }
 
 }  // namespace seaspring::io
