@@ -356,7 +356,8 @@ arguments after "--" are taken as OUTDIR/NAME and OUTDIR even when they start wi
 Backend:
   -gpu[:ID]            run on CUDA device ID (default 0); an error when no GPU is usable
   -cpu                 run on the CPU (OpenMP)
-  -threads:N           OpenMP threads, 1 <= N <= 1024 (default: all cores)
+  -threads:N           OpenMP threads, 1 <= N <= 1024 (default: all cores); with -gpu
+                       the host threads of outputs
                        (without -gpu or -cpu: the GPU when one is usable, else the CPU)
 Run control:
   -tmax:T              simulated time T > 0 [s] (overrides TimeMax)
