@@ -393,7 +393,9 @@ void Simulation::writeParticleFiles(const HostState& st, double time, long long 
     a.press.resize(np);
     a.type.resize(np);
     std::vector<double>& pos = a.pos;
-    std::vector<float>&vel = a.vel, &rhop = a.rhop, &press = a.press;
+    std::vector<float>& vel = a.vel;
+    std::vector<float>& rhop = a.rhop;
+    std::vector<float>& press = a.press;
     std::vector<std::uint8_t>& type = a.type;
     const float b = setup_.fluid.cteb, ovrho0 = setup_.fluid.ovrhop0;
     const int threads = backend_->hostThreads();
@@ -411,7 +413,9 @@ void Simulation::writeParticleFiles(const HostState& st, double time, long long 
         press[i] = physics::taitPressure7(rhop[i], b, ovrho0);
         type[i] = std::uint8_t(ptype[i]);
     }
-    std::vector<float>&disp = a.disp, &strain = a.strain, &damage = a.damage;
+    std::vector<float>& disp = a.disp;
+    std::vector<float>& strain = a.strain;
+    std::vector<float>& damage = a.damage;
     std::vector<std::uint8_t>& broken = a.broken;
     if (!setup_.solid.empty()) {
         solidFields(st, disp, strain, broken, damage);
