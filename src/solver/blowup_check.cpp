@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <omp.h>
+
 #include "core/format.h"
 #include "physics/blowup_bounds.h"
 #include "physics/time_integration.h"
@@ -133,9 +135,17 @@ std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, 
     last_scan_ = step;
     since_keep_ = 0;
     const std::size_t np = st.pos.size();
+    // Counted on the run's host threads (an integer sum: the same on any number); only a count
+    // above zero walks the particles in id order for the first offenders.
+    const long long n = static_cast<long long>(np);
+    const int threads = opt_.threads > 0 ? opt_.threads : omp_get_num_procs();
+    long long nbad = 0;
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : nbad) if (threads > 1)
+    for (long long i = 0; i < n; ++i) nbad += physics::particleNotFinite(st.pos[i], st.velrho[i], st.excl[i]) ? 1 : 0;
     Offenders bad;
-    for (std::size_t i = 0; i < np; ++i)
-        if (physics::particleNotFinite(st.pos[i], st.velrho[i], st.excl[i])) bad.add(std::uint32_t(i), st.pos[i], NAN);
+    if (nbad > 0)
+        for (std::size_t i = 0; i < np; ++i)
+            if (physics::particleNotFinite(st.pos[i], st.velrho[i], st.excl[i])) bad.add(std::uint32_t(i), st.pos[i], NAN);
     BlowupDiagnosis d;
     d.time = t;
     d.step = step;
