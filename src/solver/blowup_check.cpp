@@ -138,7 +138,7 @@ std::optional<BlowupDiagnosis> BlowupCheck::scan(const HostState& st, double t, 
     // Counted on the run's host threads (an integer sum: the same on any number); only a count
     // above zero walks the particles in id order for the first offenders.
     const long long n = static_cast<long long>(np);
-    const int threads = opt_.threads > 0 ? opt_.threads : omp_get_num_procs();
+    const int threads = opt_.threads > 0 ? opt_.threads : omp_get_max_threads();  // as the CPU backend
     long long nbad = 0;
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : nbad) if (threads > 1)
     for (long long i = 0; i < n; ++i) nbad += physics::particleNotFinite(st.pos[i], st.velrho[i], st.excl[i]) ? 1 : 0;
