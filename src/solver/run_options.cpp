@@ -258,9 +258,11 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             o.cell_div = -1;
             for (int k = 0; k < kCellModes; ++k)
                 if (g.value == cellModeName(k)) o.cell_div = k;
-            if (o.cell_div < 0)
-                usageError(g.arg + ": \"" + g.value +
-                           "\" is not a cell mode (supported: auto, full, h, third, quarter, dp)");
+            if (o.cell_div < 0) {
+                std::string modes;
+                for (int k = 0; k < kCellModes; ++k) modes += std::string(k ? ", " : "") + cellModeName(k);
+                usageError(g.arg + ": \"" + g.value + "\" is not a cell mode (supported: " + modes + ")");
+            }
         } else if (name == "skin") {
             o.skin = toDouble(g, Range::NonNegative);
             if (*o.skin > physics::kMaxSkinFraction)
