@@ -191,6 +191,31 @@ struct PairBatch {
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
             int w = m;  // w <= m + k < kCap inside the loop
+#if SEASPRING_SIMD8
+            // Eight candidates at a time (pairOffset and isNeighbour on lanes: the same bits),
+            // then the neighbours among them appended in candidate order.
+            for (int k0 = 0; k0 < take; k0 += 8) {
+                const int cnt = take - k0 < 8 ? take - k0 : 8;
+                const simd::Quad8 q = simd::loadQuads(&in.poscell[pb + std::uint32_t(k0)].x, cnt);
+                simd::Vec8f dx, dy, dz;
+                const simd::Vec8f r = pairOffset<Opt::dim>(par, q, cax, g, dx, dy, dz);
+                unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
+                alignas(32) float ox[8], oy[8], oz[8], orr[8];
+                simd::store(ox, dx);
+                simd::store(oy, dy);
+                simd::store(oz, dz);
+                simd::store(orr, r);
+                for (; hits != 0u; hits &= hits - 1u, ++w) {
+                    const int k = lowestSetBit(hits);
+                    jj[w] = pb + std::uint32_t(k0 + k);
+                    ln[w] = std::uint8_t((seen + std::uint32_t(k0 + k)) & (lanes - 1u));
+                    bx[w] = ox[k];
+                    by[w] = oy[k];
+                    bz[w] = oz[k];
+                    br[w] = orr[k];
+                }
+            }
+#else
             for (int k = 0; k < take; ++k) {
                 const std::uint32_t j = pb + std::uint32_t(k);
                 float drx, dry, drz;
@@ -203,6 +228,7 @@ struct PairBatch {
                 br[w] = r;
                 w += isNeighbour(r, c) ? 1 : 0;
             }
+#endif
             m = w;
             pb += std::uint32_t(take);
             seen += std::uint32_t(take);
@@ -387,6 +413,27 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                 boundPair<Opt>(j, drx, dry, drz, rr2, va, in, c, ar, visc);
             }
         } else {
+#if SEASPRING_SIMD8
+            // Eight candidates at a time (as PairBatch::addRow: the same bits), the neighbours'
+            // pairs in candidate order.
+            for (std::uint32_t j0 = pb; j0 < pe; j0 += 8u) {
+                const int cnt = pe - j0 < 8u ? int(pe - j0) : 8;
+                const simd::Quad8 q = simd::loadQuads(&in.poscell[j0].x, cnt);
+                simd::Vec8f dx, dy, dz;
+                const simd::Vec8f r = pairOffset<Opt::dim>(par, q, cax, g, dx, dy, dz);
+                unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
+                if (hits == 0u) continue;
+                alignas(32) float ox[8], oy[8], oz[8], orr[8];
+                simd::store(ox, dx);
+                simd::store(oy, dy);
+                simd::store(oz, dz);
+                simd::store(orr, r);
+                for (; hits != 0u; hits &= hits - 1u) {
+                    const int k = lowestSetBit(hits);
+                    boundPair<Opt>(j0 + std::uint32_t(k), ox[k], oy[k], oz[k], orr[k], va, in, c, ar, visc);
+                }
+            }
+#else
             std::uint32_t idx[kCandidateChunk];
             float bx[kCandidateChunk], by[kCandidateChunk], bz[kCandidateChunk], br[kCandidateChunk];
             for (std::uint32_t j0 = pb; j0 < pe; j0 += kCandidateChunk) {
@@ -404,6 +451,7 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                 }
                 for (int k = 0; k < n; ++k) boundPair<Opt>(idx[k], bx[k], by[k], bz[k], br[k], va, in, c, ar, visc);
             }
+#endif
         }
     });
     ar_out = ar;

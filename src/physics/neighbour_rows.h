@@ -12,6 +12,7 @@
 
 #include <cstdint>
 
+#include "core/simd8.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/sph_types.h"
@@ -32,20 +33,32 @@ SEASPRING_HD_INLINE Float4 rowFrame(const Float4& psa, float rowdy, float rowdz)
     return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
 }
 
+/// float(x) (an exact conversion of a cell difference); with SEASPRING_SIMD8 also for eight lanes.
+SEASPRING_HD_INLINE float toFloat(int x) { return float(x); }
+#if SEASPRING_SIMD8
+/// packedCellX of eight lanes (the host's SIMD candidate loop).
+inline simd::Vec8i packedCellX(const CellGrid& g, simd::Vec8f w) { return simd::bitsAnd(w, g.maskx); }
+#endif
+
 /// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
-/// rowFrame for that row.
-template <int kDim>
-SEASPRING_HD_INLINE float pairOffset(const Float4& par, const Float4& psb, int cax, const CellGrid& g,
-                                     float& drx, float& dry, float& drz) {
-    drx = fma32(g.cellsizef, float(cax - packedCellX(g, psb.w)), par.x - psb.x);
-    dry = kDim == 3 ? par.y - psb.y : 0.f;
+/// rowFrame for that row. `psb` is b's PosCell (Float4; the host's SIMD loop also passes eight
+/// candidates at once as simd::Quad8, each lane the same operations, so the same bits).
+template <int kDim, class P, class F = decltype(P::x)>
+SEASPRING_HD_INLINE F pairOffset(const Float4& par, const P& psb, int cax, const CellGrid& g, F& drx, F& dry,
+                                 F& drz) {
+    drx = fma32(F(g.cellsizef), toFloat(cax - packedCellX(g, psb.w)), par.x - psb.x);
+    if constexpr (kDim == 3) dry = par.y - psb.y;
+    else dry = F(0.f);
     drz = par.z - psb.z;
-    return kDim == 3 ? fma32(drx, drx, fma32(dry, dry, drz * drz)) : fma32(drx, drx, drz * drz);
+    if constexpr (kDim == 3) return fma32(drx, drx, fma32(dry, dry, drz * drz));
+    else return fma32(drx, drx, drz * drz);
 }
 
-/// The exact neighbour test of a pair (inside the kernel support, not the particle itself).
-SEASPRING_HD_INLINE bool isNeighbour(float rr2, const FluidConstants& c) {
-    return rr2 <= c.ker.kernelsize2 && rr2 >= kAlmostZero;
+/// The exact neighbour test of a pair (inside the kernel support, not the particle itself); for
+/// eight lanes, a lane mask.
+template <class F>
+SEASPRING_HD_INLINE auto isNeighbour(F rr2, const FluidConstants& c) {
+    return rr2 <= F(c.ker.kernelsize2) && rr2 >= F(kAlmostZero);
 }
 
 /// The cells around a particle's cell that its neighbour search visits: rows y0..y1, z0..z1

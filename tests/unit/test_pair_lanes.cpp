@@ -9,6 +9,8 @@
 ///          core/lane_group.h on the GPU, emulated here) leaves lane 0 with combineLanes' result;
 ///        - the GPU's masked rows (fluidPairsInRowMasked) give the direct walk's bits, lane by
 ///          lane, also on rows longer than one 32-bit mask;
+///        - the boundary particles' batched filter (boundParticleForces' host path: eight
+///          candidates at a time where the host has AVX2) gives the direct walk's bits;
 ///        - one lane is the plain sum, and more lanes change only the rounding: every candidate
 ///          lands in exactly one lane (the sums agree to float rounding, and a lane left out or
 ///          counted twice is far outside it).
@@ -224,6 +226,31 @@ TEST(PairLanes, MaskedRowsKeepTheDirectWalksBitsOnRowsLongerThanAMask) {
     std::mt19937 rng(15);
     EXPECT_GT(longestRow<2>(makeScene(2, 1, rng, 4)), 64u);
     checkLanes<Opt>(1, 15, 4);
+}
+
+/// Each boundary particle's continuity sum and viscous dt measure through the host's batched
+/// filter against the direct walk (the GPU's loop), bit for bit.
+template <class Opt>
+void checkBoundaryParticles(int cell_div, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    const Scene s = makeScene(Opt::dim, cell_div, rng);
+    const InteractionInputs in = s.inputs();
+    int wet = 0;
+    for (std::uint32_t i = 0; i < s.nb; ++i) {
+        float ar1 = -1.f, visc1 = -1.f, ar2 = -2.f, visc2 = -2.f;
+        boundParticleForces<Opt, true>(i, in, s.c, s.g, ar1, visc1);
+        boundParticleForces<Opt, false>(i, in, s.c, s.g, ar2, visc2);
+        ASSERT_TRUE(sameBits(ar1, ar2) && sameBits(visc1, visc2))
+            << Opt::dim << "D boundary particle " << i << ": " << ar1 << " vs " << ar2 << ", " << visc1 << " vs " << visc2;
+        wet += ar1 != 0.f ? 1 : 0;
+    }
+    EXPECT_GT(wet, int(s.nb) / 4) << "boundary particles with fluid neighbours";
+}
+
+TEST(PairLanes, BoundaryParticlesBatchedGiveTheDirectWalksBits) {
+    checkBoundaryParticles<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::None, 2>>(2, 16);
+    checkBoundaryParticles<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::None, 3>>(4, 17);
+    checkBoundaryParticles<FluidOptions<CubicKernel, Viscosity::Artificial, DensityDiffusion::None, 3>>(2, 18);
 }
 
 TEST(PairLanes, CombineLanesIsThePairwiseTree) {

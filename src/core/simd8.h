@@ -1,0 +1,75 @@
+// SeaSpring — MIT licence.
+/// \file simd8.h
+/// \brief Eight float lanes (AVX2 and FMA) for the host's pair loops: the same formula, written
+///        once for a float (physics/neighbour_rows.h), evaluated for eight candidates at a time.
+///        Each lane's operations are the scalar ones (IEEE subtraction, product, fused
+///        multiply-add, exact int-to-float conversion of small integers, ordered comparisons),
+///        so every lane gives the scalar bits. Only where the host compiler (not nvcc) targets
+///        AVX2 and FMA: SEASPRING_SIMD8 is then 1, otherwise the scalar loops run.
+#pragma once
+
+#if !defined(__CUDACC__) && defined(__AVX2__) && defined(__FMA__)
+#define SEASPRING_SIMD8 1
+#include <immintrin.h>
+
+#include <cstdint>
+
+namespace seaspring::simd {
+
+struct Vec8f {
+    __m256 v;
+    Vec8f() = default;
+    Vec8f(__m256 x) : v(x) {}                    // NOLINT: a lane vector is its register
+    Vec8f(float s) : v(_mm256_set1_ps(s)) {}     // NOLINT: a scalar operand is broadcast
+};
+struct Vec8i {
+    __m256i v;
+};
+/// A lane mask from a comparison (all bits set where it holds).
+struct Mask8 {
+    __m256 v;
+    /// Bit k set where lane k holds.
+    unsigned bits() const { return unsigned(_mm256_movemask_ps(v)); }
+};
+
+inline Vec8f operator-(Vec8f a, Vec8f b) { return _mm256_sub_ps(a.v, b.v); }
+inline Vec8f operator*(Vec8f a, Vec8f b) { return _mm256_mul_ps(a.v, b.v); }
+inline Vec8f fma32(Vec8f a, Vec8f b, Vec8f c) { return _mm256_fmadd_ps(a.v, b.v, c.v); }
+inline Vec8i operator-(int a, Vec8i b) { return Vec8i{_mm256_sub_epi32(_mm256_set1_epi32(a), b.v)}; }
+/// Exact for |x| < 2^24 (cell coordinates), as float(x).
+inline Vec8f toFloat(Vec8i x) { return _mm256_cvtepi32_ps(x.v); }
+/// Ordered comparisons: false for a NaN lane, as the scalar <= and >=.
+inline Mask8 operator<=(Vec8f a, Vec8f b) { return Mask8{_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)}; }
+inline Mask8 operator>=(Vec8f a, Vec8f b) { return Mask8{_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ)}; }
+/// Lane-wise: both masks hold (no short circuit: both sides are lane masks).
+inline Mask8 operator&&(Mask8 a, Mask8 b) { return Mask8{_mm256_and_ps(a.v, b.v)}; }
+/// The bits of each lane, and the low bits under `mask`.
+inline Vec8i bitsAnd(Vec8f x, std::uint32_t mask) {
+    return Vec8i{_mm256_and_si256(_mm256_castps_si256(x.v), _mm256_set1_epi32(int(mask)))};
+}
+
+/// Eight consecutive 16-byte records (x, y, z, w) as four lane vectors; records k >= cnt are
+/// not read (their lanes hold zeros).
+struct Quad8 {
+    Vec8f x, y, z, w;
+};
+inline Quad8 loadQuads(const float* p, int cnt) {
+    __m128 q[8];
+    for (int k = 0; k < 8; ++k) {
+        const __m128i m = _mm_set1_epi32(k < cnt ? -1 : 0);
+        q[k] = _mm_maskload_ps(p + 4 * k, m);  // masked lanes do not fault
+    }
+    const __m256 a0 = _mm256_set_m128(q[4], q[0]), a1 = _mm256_set_m128(q[5], q[1]);
+    const __m256 a2 = _mm256_set_m128(q[6], q[2]), a3 = _mm256_set_m128(q[7], q[3]);
+    const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);
+    const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);
+    return Quad8{_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
+                 _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+}
+inline void store(float* p, Vec8f x) { _mm256_storeu_ps(p, x.v); }
+
+}  // namespace seaspring::simd
+
+#else
+#define SEASPRING_SIMD8 0
+#endif
