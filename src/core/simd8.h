@@ -68,6 +68,37 @@ inline Quad8 loadQuads(const float* p, int cnt) {
 }
 inline void store(float* p, Vec8f x) { _mm256_storeu_ps(p, x.v); }
 
+/// For each 8-bit lane mask, the lanes it holds in ascending order (then zeros): the permutation
+/// that packs the selected lanes to the front.
+struct LeftPackTable {
+    alignas(32) std::int32_t idx[256][8];
+};
+constexpr LeftPackTable makeLeftPackTable() {
+    LeftPackTable t{};
+    for (int m = 0; m < 256; ++m) {
+        int n = 0;
+        for (int k = 0; k < 8; ++k)
+            if ((m >> k) & 1) t.idx[m][n++] = k;
+        for (; n < 8; ++n) t.idx[m][n] = 0;
+    }
+    return t;
+}
+inline constexpr LeftPackTable kLeftPack = makeLeftPackTable();
+
+/// The lanes of `x` selected by `mask` (bit k: lane k), in ascending order, stored at p[0, n)
+/// (n = the mask's set bits); p[n, 8) is overwritten with other lanes: p needs room for 8.
+inline void leftPackStore(float* p, Vec8f x, unsigned mask) {
+    const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kLeftPack.idx[mask]));
+    _mm256_storeu_ps(p, _mm256_permutevar8x32_ps(x.v, perm));
+}
+/// The same for the integers base + k of lanes k (candidate numbers), masked by `andmask`.
+inline void leftPackStoreIota(std::uint32_t* p, std::uint32_t base, std::uint32_t andmask, unsigned mask) {
+    const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kLeftPack.idx[mask]));
+    const __m256i v = _mm256_and_si256(_mm256_add_epi32(_mm256_set1_epi32(int(base)), perm),
+                                       _mm256_set1_epi32(int(andmask)));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v);
+}
+
 }  // namespace seaspring::simd
 
 #else

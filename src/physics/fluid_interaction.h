@@ -117,9 +117,11 @@ struct PairBatch {
     static constexpr bool kLaminar = Opt::visco != Viscosity::Artificial;
     static constexpr bool kSps = Opt::sps;
     // The neighbours found so far (candidates that passed isNeighbour, in candidate order).
-    std::uint32_t jj[kCap];
-    std::uint8_t ln[kCap];
-    float bx[kCap], by[kCap], bz[kCap], br[kCap];
+    // (kPad more: the host's SIMD loop stores eight lanes at the batch's end, SEASPRING_SIMD8.)
+    static constexpr int kPad = 8;
+    std::uint32_t jj[kCap + kPad];
+    std::uint32_t ln[kCap + kPad];
+    float bx[kCap + kPad], by[kCap + kPad], bz[kCap + kPad], br[kCap + kPad];
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
     float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kSps ? 1 : kCap], tarv[kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
     float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
@@ -199,21 +201,15 @@ struct PairBatch {
                 const simd::Quad8 q = simd::loadQuads(&in.poscell[pb + std::uint32_t(k0)].x, cnt);
                 simd::Vec8f dx, dy, dz;
                 const simd::Vec8f r = pairOffset<Opt::dim>(par, q, cax, g, dx, dy, dz);
-                unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
-                alignas(32) float ox[8], oy[8], oz[8], orr[8];
-                simd::store(ox, dx);
-                simd::store(oy, dy);
-                simd::store(oz, dz);
-                simd::store(orr, r);
-                for (; hits != 0u; hits &= hits - 1u, ++w) {
-                    const int k = lowestSetBit(hits);
-                    jj[w] = pb + std::uint32_t(k0 + k);
-                    ln[w] = std::uint8_t((seen + std::uint32_t(k0 + k)) & (lanes - 1u));
-                    bx[w] = ox[k];
-                    by[w] = oy[k];
-                    bz[w] = oz[k];
-                    br[w] = orr[k];
-                }
+                const unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
+                // The neighbours packed to the batch's end (w + 8 <= kCap + kPad), branch-free.
+                simd::leftPackStoreIota(jj + w, pb + std::uint32_t(k0), ~0u, hits);
+                simd::leftPackStoreIota(ln + w, seen + std::uint32_t(k0), lanes - 1u, hits);
+                simd::leftPackStore(bx + w, dx, hits);
+                simd::leftPackStore(by + w, dy, hits);
+                simd::leftPackStore(bz + w, dz, hits);
+                simd::leftPackStore(br + w, r, hits);
+                w += __builtin_popcount(hits);
             }
 #else
             for (int k = 0; k < take; ++k) {
@@ -221,7 +217,7 @@ struct PairBatch {
                 float drx, dry, drz;
                 const float r = pairOffset<Opt::dim>(par, in.poscell[j], cax, g, drx, dry, drz);
                 jj[w] = j;
-                ln[w] = std::uint8_t((seen + std::uint32_t(k)) & (lanes - 1u));
+                ln[w] = (seen + std::uint32_t(k)) & (lanes - 1u);
                 bx[w] = drx;
                 by[w] = dry;
                 bz[w] = drz;
