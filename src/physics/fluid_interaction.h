@@ -195,7 +195,7 @@ struct PairBatch {
             int w = m;  // w <= m + k < kCap inside the loop
 #if SEASPRING_SIMD8
             // Eight candidates at a time (pairOffset and isNeighbour on lanes: the same bits),
-            // then the neighbours among them appended in candidate order.
+            // then the neighbours among them packed to the batch's end in candidate order.
             for (int k0 = 0; k0 < take; k0 += 8) {
                 const int cnt = take - k0 < 8 ? take - k0 : 8;
                 const simd::Quad8 q = simd::loadQuads(&in.poscell[pb + std::uint32_t(k0)].x, cnt);

@@ -38,6 +38,7 @@ SEASPRING_HD_INLINE float toFloat(int x) { return float(x); }
 #if SEASPRING_SIMD8
 /// packedCellX of eight lanes (the host's SIMD candidate loop).
 inline simd::Vec8i packedCellX(const CellGrid& g, simd::Vec8f w) { return simd::bitsAnd(w, g.maskx); }
+static_assert(sizeof(Float4) == 4 * sizeof(float), "simd::loadQuads reads PosCells as four packed floats");
 #endif
 
 /// Offset r_ab = r_a - r_b of a candidate b of the row and its squared length; `par` is a's
