@@ -74,13 +74,10 @@ struct LeftPackTable {
     alignas(32) std::int32_t idx[256][8];
 };
 constexpr LeftPackTable makeLeftPackTable() {
-    LeftPackTable t{};
-    for (int m = 0; m < 256; ++m) {
-        int n = 0;
-        for (int k = 0; k < 8; ++k)
+    LeftPackTable t{};  // zeros after each mask's lanes
+    for (int m = 0; m < 256; ++m)
+        for (int k = 0, n = 0; k < 8; ++k)
             if ((m >> k) & 1) t.idx[m][n++] = k;
-        for (; n < 8; ++n) t.idx[m][n] = 0;
-    }
     return t;
 }
 inline constexpr LeftPackTable kLeftPack = makeLeftPackTable();
