@@ -24,6 +24,9 @@ struct Vec8f {
 };
 struct Vec8i {
     __m256i v;
+    Vec8i() = default;
+    Vec8i(__m256i x) : v(x) {}                  // NOLINT: a lane vector is its register
+    Vec8i(int s) : v(_mm256_set1_epi32(s)) {}    // NOLINT: a scalar operand is broadcast
 };
 /// A lane mask from a comparison (all bits set where it holds).
 struct Mask8 {
@@ -31,18 +34,38 @@ struct Mask8 {
     /// Bit k set where lane k holds.
     unsigned bits() const { return unsigned(_mm256_movemask_ps(v)); }
 };
+/// Lanes k = 0..7 (base + k).
+inline Vec8i iota(int base) { return _mm256_add_epi32(_mm256_set1_epi32(base), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)); }
 
 inline Vec8f operator-(Vec8f a, Vec8f b) { return _mm256_sub_ps(a.v, b.v); }
 inline Vec8f operator*(Vec8f a, Vec8f b) { return _mm256_mul_ps(a.v, b.v); }
 inline Vec8f fma32(Vec8f a, Vec8f b, Vec8f c) { return _mm256_fmadd_ps(a.v, b.v, c.v); }
-inline Vec8i operator-(int a, Vec8i b) { return Vec8i{_mm256_sub_epi32(_mm256_set1_epi32(a), b.v)}; }
+inline Vec8f operator+(Vec8f a, Vec8f b) { return _mm256_add_ps(a.v, b.v); }
+inline Vec8i operator-(Vec8i a, Vec8i b) { return _mm256_sub_epi32(a.v, b.v); }
+inline Vec8i operator+(Vec8i a, Vec8i b) { return _mm256_add_epi32(a.v, b.v); }
+/// The low 32 bits of the product, as the scalar (unsigned) int product.
+inline Vec8i operator*(Vec8i a, Vec8i b) { return _mm256_mullo_epi32(a.v, b.v); }
+inline Vec8i maxi(Vec8i a, Vec8i b) { return _mm256_max_epi32(a.v, b.v); }
+inline Vec8i mini(Vec8i a, Vec8i b) { return _mm256_min_epi32(a.v, b.v); }
+/// The IEEE square root (correctly rounded, as sqrtf).
+inline Vec8f sqrtIeee(Vec8f x) { return _mm256_sqrt_ps(x.v); }
+/// int(floorf(x)) of each lane (x finite and in int range; other lanes are left undefined).
+inline Vec8i floorToInt(Vec8f x) { return _mm256_cvttps_epi32(_mm256_floor_ps(x.v)); }
 /// Exact for |x| < 2^24 (cell coordinates), as float(x).
 inline Vec8f toFloat(Vec8i x) { return _mm256_cvtepi32_ps(x.v); }
 /// Ordered comparisons: false for a NaN lane, as the scalar <= and >=.
 inline Mask8 operator<=(Vec8f a, Vec8f b) { return Mask8{_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)}; }
 inline Mask8 operator>=(Vec8f a, Vec8f b) { return Mask8{_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ)}; }
+inline Mask8 operator>(Vec8f a, Vec8f b) { return Mask8{_mm256_cmp_ps(a.v, b.v, _CMP_GT_OQ)}; }
+inline Mask8 operator>(Vec8i a, Vec8i b) { return Mask8{_mm256_castsi256_ps(_mm256_cmpgt_epi32(a.v, b.v))}; }
+inline Mask8 operator<(Vec8i a, Vec8i b) { return b > a; }
+inline Mask8 operator<=(Vec8i a, Vec8i b) {
+    return Mask8{_mm256_castsi256_ps(_mm256_xor_si256(_mm256_cmpgt_epi32(a.v, b.v), _mm256_set1_epi32(-1)))};
+}
 /// Lane-wise: both masks hold (no short circuit: both sides are lane masks).
 inline Mask8 operator&&(Mask8 a, Mask8 b) { return Mask8{_mm256_and_ps(a.v, b.v)}; }
+/// a where m holds, b elsewhere (the scalar m ? a : b).
+inline Vec8f choose(Mask8 m, Vec8f a, Vec8f b) { return _mm256_blendv_ps(b.v, a.v, m.v); }
 /// The bits of each lane, and the low bits under `mask`.
 inline Vec8i bitsAnd(Vec8f x, std::uint32_t mask) {
     return Vec8i{_mm256_and_si256(_mm256_castps_si256(x.v), _mm256_set1_epi32(int(mask)))};
@@ -87,6 +110,11 @@ inline constexpr LeftPackTable kLeftPack = makeLeftPackTable();
 inline void leftPackStore(float* p, Vec8f x, unsigned mask) {
     const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kLeftPack.idx[mask]));
     _mm256_storeu_ps(p, _mm256_permutevar8x32_ps(x.v, perm));
+}
+/// The same for integer lanes.
+inline void leftPackStore(std::uint32_t* p, Vec8i x, unsigned mask) {
+    const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kLeftPack.idx[mask]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), _mm256_permutevar8x32_epi32(x.v, perm));
 }
 /// The same for the integers base + k of lanes k (candidate numbers), masked by `andmask`.
 inline void leftPackStoreIota(std::uint32_t* p, std::uint32_t base, std::uint32_t andmask, unsigned mask) {

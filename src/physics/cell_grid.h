@@ -107,12 +107,25 @@ SEASPRING_HD inline std::uint32_t linearCellOf(const CellGrid& g, float w) {
     return g.linear(packedCellX(g, w), packedCellY(g, w), packedCellZ(g, w));
 }
 
+/// Scalar forms of the lane operations that cellGap and rowSpan are written with (the host's
+/// row table evaluates them on eight rows at once with core/simd8.h's: the same operations).
+/// float(x), exact for a cell difference.
+SEASPRING_HD_INLINE float toFloat(int x) { return float(x); }
+/// m ? a : b.
+SEASPRING_HD_INLINE float choose(bool m, float a, float b) { return m ? a : b; }
+/// The IEEE square root.
+SEASPRING_HD_INLINE float sqrtIeee(float x) { return sqrtf(x); }
+/// int(floorf(x)).
+SEASPRING_HD_INLINE int floorToInt(float x) { return int(floorf(x)); }
+
 /// Distance along one axis from a point at offset `o` in its cell ([0, cellsize]) to the
 /// nearest face of the cell `k` cells away (0 for k = 0), less `margin`, floored at 0.
-SEASPRING_HD_INLINE float cellGap(int k, float o, float cs, float margin) {
-    const float d = k > 0 ? float(k) * cs - o : (k < 0 ? o - float(k + 1) * cs : 0.f);
-    const float dm = d - margin;
-    return dm > 0.f ? dm : 0.f;
+/// I, F: int and float, or eight lanes of each (simd::Vec8i, simd::Vec8f).
+template <class I, class F>
+SEASPRING_HD_INLINE F cellGap(I k, F o, float cs, float margin) {
+    const F d = choose(k > I(0), toFloat(k) * F(cs) - o, choose(k < I(0), o - toFloat(k + I(1)) * F(cs), F(0.f)));
+    const F dm = d - F(margin);
+    return choose(dm > F(0.f), dm, F(0.f));
 }
 
 /// The x cells [x0, x1] of one row of cells that can hold particles within sqrt(r2) of a point
@@ -121,18 +134,21 @@ SEASPRING_HD_INLINE float cellGap(int k, float o, float cs, float margin) {
 /// conservative: every pair that passes the exact pair test (float r^2 <= r2) lies inside it,
 /// so skipping the rest changes no result; it only spares the candidates out of reach
 /// (rows at the corners of the search box and cells beyond the sphere along x).
-SEASPRING_HD_INLINE bool rowSpan(const CellGrid& g, int cax, float ox, float gyz2, float r2, float margin,
-                                 int& x0, int& x1) {
-    const float rem = r2 - gyz2;
-    if (rem < 0.f) return false;
-    const float dx = sqrtf(rem) + margin;
-    const int k0 = int(floorf((ox - dx) * g.ovcellsizef));
-    const int k1 = int(floorf((ox + dx) * g.ovcellsizef));
-    x0 = cax + (k0 > -g.range ? k0 : -g.range);
-    x1 = cax + (k1 < g.range ? k1 : g.range);
-    if (x0 < 0) x0 = 0;
-    if (x1 > g.ncx - 1) x1 = g.ncx - 1;
-    return x0 <= x1;
+/// I, F as cellGap; for lanes the result is a lane mask (x0, x1 undefined in lanes out of reach).
+template <class I, class F>
+SEASPRING_HD_INLINE auto rowSpan(const CellGrid& g, int cax, F ox, F gyz2, float r2, float margin, I& x0, I& x1) {
+    constexpr bool kScalar = sizeof(F) == sizeof(float);
+    const F rem = F(r2) - gyz2;
+    if constexpr (kScalar) {
+        if (rem < 0.f) return false;
+    }
+    const F dx = sqrtIeee(rem) + F(margin);
+    const I k0 = floorToInt((ox - dx) * F(g.ovcellsizef));
+    const I k1 = floorToInt((ox + dx) * F(g.ovcellsizef));
+    x0 = maxi(I(cax) + maxi(k0, I(-g.range)), I(0));
+    x1 = mini(I(cax) + mini(k1, I(g.range)), I(g.ncx - 1));
+    if constexpr (kScalar) return x0 <= x1;
+    else return rem >= F(0.f) && x0 <= x1;
 }
 
 /// Sort key: cell then particle id for active particles; excluded particles after all cells

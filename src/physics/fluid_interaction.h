@@ -388,7 +388,8 @@ SEASPRING_HD inline void boundPair(std::uint32_t j, float drx, float dry, float 
 
 /// Force evaluation of DBC boundary particle `i`: continuity with fluid neighbours and the
 /// viscous dt measure (boundary particles feel no force: their motion is prescribed).
-/// The row walk is forEachCandidateRow's; kCompact: branch-free selection (as PairBatch).
+/// The row walk is forEachCandidateRow's; kCompact (the host): the rows from a RowTable (the
+/// same rows) and the candidates eight at a time (as PairBatch).
 template <class Opt, bool kCompact = false>
 SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionInputs& in,
                                              const FluidConstants& c, const CellGrid& g,
@@ -399,8 +400,7 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
     ar_out = 0.f;
     visc_out = 0.f;
     if (in.near != nullptr && (in.near[linearCellOf(g, psa.w)] & kNearFluid) == 0) return;  // a dry wall
-    forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, [&](std::uint32_t pb, std::uint32_t pe,
-                                                                     const Float4& par, int cax) {
+    auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (!kCompact) {
             for (std::uint32_t j = pb; j < pe; ++j) {
                 float drx, dry, drz;
@@ -449,7 +449,18 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
             }
 #endif
         }
-    });
+    };
+    if constexpr (kCompact) {  // the host: the rows from a RowTable (SIMD rows, the same rows)
+        RowTable rows;
+        rows.template build<Opt::dim>(psa, c, g);
+        if (!rows.full) {
+            rows.forEachCandidateRow(psa, in.cell_start_fluid, row);
+        } else {
+            forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, row);
+        }
+    } else {
+        forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, row);
+    }
     ar_out = ar;
     visc_out = visc;
 }

@@ -33,8 +33,6 @@ SEASPRING_HD_INLINE Float4 rowFrame(const Float4& psa, float rowdy, float rowdz)
     return Float4{psa.x, psa.y + rowdy, psa.z + rowdz, psa.w};
 }
 
-/// float(x) (an exact conversion of a cell difference); with SEASPRING_SIMD8 also for eight lanes.
-SEASPRING_HD_INLINE float toFloat(int x) { return float(x); }
 #if SEASPRING_SIMD8
 /// packedCellX of eight lanes (the host's SIMD candidate loop).
 inline simd::Vec8i packedCellX(const CellGrid& g, simd::Vec8f w) { return simd::bitsAnd(w, g.maskx); }
@@ -131,14 +129,14 @@ SEASPRING_HD_INLINE bool rowsAlongY(const SearchBox& b, const Float4& psa, float
 /// arguments of pairOffset). The one row walk of every pair loop: forEachCandidateRow takes a
 /// block's candidates from it, and the host builds one RowTable per particle from it for all
 /// its blocks.
+template <int kDim, class ZFn>
+SEASPRING_HD_INLINE void forEachZInReach(const SearchBox& box, const Float4& psa, const FluidConstants& c,
+                                         const CellGrid& g, ZFn fn);
+
 template <int kDim, class RowFn>
 SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstants& c, const CellGrid& g, RowFn fn) {
     const SearchBox box = searchBox<kDim>(psa, g);
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float rowdz = g.cellsizef * float(box.caz - z);
-        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
-        int ylo, yhi;
-        if (!rowsAlongY<kDim>(box, psa, gz, c, g, ylo, yhi)) continue;
+    forEachZInReach<kDim>(box, psa, c, g, [&](int z, float rowdz, float gz, int ylo, int yhi) {
         for (int y = ylo; y <= yhi; ++y) {
             std::uint32_t c0, c1;
             if (!rowCells<kDim>(box, psa, y, z, gz, c, g, c0, c1)) continue;
@@ -148,6 +146,21 @@ SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstan
             SEASPRING_MATERIALIZE(par.z);
             fn(c0, c1, par, box.cax);
         }
+    });
+}
+
+/// The z rows of `box` in reach of `psa` (ascending): fn(z, rowdz, gz, ylo, yhi) with rowdz
+/// the row frame's z shift, gz the z gap (cellGap) and [ylo, yhi] the y rows to test
+/// (rowsAlongY). forEachRowInReach's outer loop, shared with the host's RowTable.
+template <int kDim, class ZFn>
+SEASPRING_HD_INLINE void forEachZInReach(const SearchBox& box, const Float4& psa, const FluidConstants& c,
+                                         const CellGrid& g, ZFn fn) {
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        int ylo, yhi;
+        if (!rowsAlongY<kDim>(box, psa, gz, c, g, ylo, yhi)) continue;
+        fn(z, rowdz, gz, ylo, yhi);
     }
 }
 
@@ -165,13 +178,17 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
 
 /// The rows in reach of one particle (forEachRowInReach), kept for all the blocks it visits
 /// (the host's path): row k has linear cells [c0[k], c1[k]) and the row frame (x, py[k], pz[k]).
+/// With SEASPRING_SIMD8 (the host's AVX2 build) eight rows along y are tested at once: rowCells'
+/// cellGap and rowSpan and the row frame's y evaluated on lanes (the same operations, so the
+/// same rows and bits), the rows in reach packed in order.
 struct RowTable {
     static constexpr int kCap = 256;  ///< rows at most; a larger search box: `full` (not built)
+    static constexpr int kPad = 8;    ///< room for the lanes' stores at the table's end
     int n = 0;
     bool full = false;
     int cax = 0;
-    std::uint32_t c0[kCap], c1[kCap];
-    float py[kCap], pz[kCap];
+    std::uint32_t c0[kCap + kPad], c1[kCap + kPad];
+    float py[kCap + kPad], pz[kCap + kPad];
 
     template <int kDim>
     SEASPRING_HD void build(const Float4& psa, const FluidConstants& c, const CellGrid& g) {
@@ -179,6 +196,29 @@ struct RowTable {
         n = 0;
         full = (box.z1 - box.z0 + 1) * (box.y1 - box.y0 + 1) > kCap;
         if (full) return;
+#if SEASPRING_SIMD8
+        cax = box.cax;
+        forEachZInReach<kDim>(box, psa, c, g, [&](int z, float rowdz, float gz, int ylo, int yhi) {
+            const float gz2 = gz * gz;
+            const float rowz = psa.z + rowdz;  // rowFrame's z
+            for (int y0 = ylo; y0 <= yhi; y0 += 8) {
+                const simd::Vec8i y = simd::iota(y0);
+                simd::Vec8f gy(0.f);
+                if constexpr (kDim == 3) gy = cellGap(y - simd::Vec8i(box.cay), simd::Vec8f(psa.y), g.cellsizef, box.margin);
+                simd::Vec8i x0, x1;
+                const simd::Mask8 in = rowSpan(g, box.cax, simd::Vec8f(psa.x), gy * gy + simd::Vec8f(gz2),
+                                               c.ker.kernelsize2, box.margin, x0, x1);
+                const unsigned bits = (in && y <= simd::Vec8i(yhi)).bits();
+                // g.linear(0, y, z) (the unsigned product's low bits, as the scalar's)
+                const simd::Vec8i row = simd::Vec8i(g.ncx) * (y + simd::Vec8i(g.ncy) * simd::Vec8i(z));
+                simd::leftPackStore(c0 + n, row + x0, bits);
+                simd::leftPackStore(c1 + n, row + x1 + simd::Vec8i(1), bits);
+                simd::leftPackStore(py + n, simd::Vec8f(psa.y) + simd::Vec8f(g.cellsizef) * toFloat(simd::Vec8i(box.cay) - y), bits);
+                simd::leftPackStore(pz + n, simd::Vec8f(rowz), bits);
+                n += __builtin_popcount(bits);
+            }
+        });
+#else
         forEachRowInReach<kDim>(psa, c, g, [&](std::uint32_t r0, std::uint32_t r1, const Float4& par, int x) {
             c0[n] = r0;
             c1[n] = r1;
@@ -187,6 +227,7 @@ struct RowTable {
             cax = x;
             ++n;
         });
+#endif
     }
     /// fn(pb, pe, par, cax) for the rows in the block of `cell_start`, as forEachCandidateRow.
     template <class RowFn>

@@ -6,7 +6,8 @@
 ///        nothing; building one block's bit keeps the other's.
 ///        The candidate rows of forEachCandidateRow against a brute-force pair scan: every
 ///        neighbour is among them, visited in sorted order; and the rows walked (rowsAlongY
-///        bounding each z's rows) are exactly those rowCells accepts over the whole search box.
+///        bounding each z's rows) are exactly those rowCells accepts over the whole search box;
+///        the host's RowTable (SIMD rows) holds the same rows and row frames, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -130,6 +131,8 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
         ++cs[cell[order[k]] + 1];
     }
     for (std::uint32_t k = 0; k < nc; ++k) cs[k + 1] += cs[k];
+    std::vector<std::uint32_t> identity(nc + 1);  // cell starts that give a row's cells themselves
+    std::iota(identity.begin(), identity.end(), 0u);
     long long pairs = 0;
     for (std::uint32_t a = 0; a < n; ++a) {
         const Float4 psa = ps[a];
@@ -158,6 +161,26 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
             }
         }
         ASSERT_EQ(walked, accepted) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
+        // The host's RowTable (eight rows along y at a time where SEASPRING_SIMD8) holds the
+        // same rows with the same row frames, bit for bit.
+        std::vector<std::uint32_t> frames, tabled, tabled_frames;
+        forEachRowInReach<kDim>(psa, c, g, [&](std::uint32_t, std::uint32_t, const Float4& par, int x) {
+            frames.insert(frames.end(), {floatBitsToUint(par.x), floatBitsToUint(par.y), floatBitsToUint(par.z),
+                                         floatBitsToUint(par.w), std::uint32_t(x)});
+        });
+        RowTable table;
+        table.build<kDim>(psa, c, g);
+        ASSERT_FALSE(table.full);
+        for (int k = 0; k < table.n; ++k) {
+            tabled.push_back(table.c0[k]);
+            tabled.push_back(table.c1[k]);
+        }
+        table.forEachCandidateRow(psa, identity.data(), [&](std::uint32_t, std::uint32_t, const Float4& par, int x) {
+            tabled_frames.insert(tabled_frames.end(), {floatBitsToUint(par.x), floatBitsToUint(par.y),
+                                                       floatBitsToUint(par.z), floatBitsToUint(par.w), std::uint32_t(x)});
+        });
+        ASSERT_EQ(tabled, walked) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
+        ASSERT_EQ(tabled_frames, frames) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
         ASSERT_TRUE(std::is_sorted(seen.begin(), seen.end()) &&
                     std::adjacent_find(seen.begin(), seen.end()) == seen.end())
             << "candidates out of order, particle " << a;
