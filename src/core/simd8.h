@@ -89,6 +89,15 @@ inline Quad8 loadQuads(const float* p, int cnt) {
     return Quad8{_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
                  _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
 }
+/// loadQuads of eight records, all read (p[0, 32) must be readable).
+inline Quad8 loadQuads(const float* p) {
+    const __m256 a0 = _mm256_loadu2_m128(p + 16, p), a1 = _mm256_loadu2_m128(p + 20, p + 4);
+    const __m256 a2 = _mm256_loadu2_m128(p + 24, p + 8), a3 = _mm256_loadu2_m128(p + 28, p + 12);
+    const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);
+    const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);
+    return Quad8{_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
+                 _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+}
 inline void store(float* p, Vec8f x) { _mm256_storeu_ps(p, x.v); }
 
 /// For each 8-bit lane mask, the lanes it holds in ascending order (then zeros): the permutation

@@ -183,10 +183,10 @@ struct PairBatch {
         m = 0;
     }
 
-    /// Candidates [pb, pe), the first of them number `seen` of the block: the neighbours among
-    /// them are appended (branch-free: every candidate is written at m, m advances on a
-    /// neighbour).
-    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen, std::uint32_t lanes,
+    /// Candidates [pb, pe), the first of them number `seen` of the block, whose particles end
+    /// at `end` (the lane loads may read records [pe, end)): the neighbours among them are
+    /// appended (branch-free: every candidate is written at m, m advances on a neighbour).
+    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t end, std::uint32_t seen, std::uint32_t lanes,
                              const Float4& par, int cax, const Float4& va, float ovrhoa, float pressa,
                              const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, FluidAccum* acc) {
@@ -198,7 +198,11 @@ struct PairBatch {
             // then the neighbours among them packed to the batch's end in candidate order.
             for (int k0 = 0; k0 < take; k0 += 8) {
                 const int cnt = take - k0 < 8 ? take - k0 : 8;
-                const simd::Quad8 q = simd::loadQuads(&in.poscell[pb + std::uint32_t(k0)].x, cnt);
+                const std::uint32_t j0 = pb + std::uint32_t(k0);
+                // Past the row's end the block's next particles are read (their lanes masked
+                // off below); records past the block's end are not.
+                const simd::Quad8 q = j0 + 8u <= end ? simd::loadQuads(&in.poscell[j0].x)
+                                                      : simd::loadQuads(&in.poscell[j0].x, cnt);
                 simd::Vec8f dx, dy, dz;
                 const simd::Vec8f r = pairOffset<Opt::dim>(par, q, cax, g, dx, dy, dz);
                 const unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
@@ -245,9 +249,10 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
     std::uint32_t seen = 0;
+    [[maybe_unused]] const std::uint32_t end = kCompact ? cell_start[g.cellCount()] : 0u;  // the block's end (the host's lane loads)
     auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (kCompact)
-            batch.addRow(pb, pe, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+            batch.addRow(pb, pe, end, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
         else if constexpr (kMask)
             fluidPairsInRowMasked<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g,
                                                *acc);
@@ -400,6 +405,7 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
     ar_out = 0.f;
     visc_out = 0.f;
     if (in.near != nullptr && (in.near[linearCellOf(g, psa.w)] & kNearFluid) == 0) return;  // a dry wall
+    [[maybe_unused]] const std::uint32_t end = kCompact ? in.cell_start_fluid[g.cellCount()] : 0u;  // the fluid block's end
     auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (!kCompact) {
             for (std::uint32_t j = pb; j < pe; ++j) {
@@ -414,7 +420,8 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
             // pairs in candidate order.
             for (std::uint32_t j0 = pb; j0 < pe; j0 += 8u) {
                 const int cnt = pe - j0 < 8u ? int(pe - j0) : 8;
-                const simd::Quad8 q = simd::loadQuads(&in.poscell[j0].x, cnt);
+                const simd::Quad8 q = j0 + 8u <= end ? simd::loadQuads(&in.poscell[j0].x)
+                                                      : simd::loadQuads(&in.poscell[j0].x, cnt);
                 simd::Vec8f dx, dy, dz;
                 const simd::Vec8f r = pairOffset<Opt::dim>(par, q, cax, g, dx, dy, dz);
                 unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
