@@ -1,11 +1,13 @@
 // SeaSpring — MIT licence.
 /// \file simd8.h
-/// \brief Eight float lanes (AVX2 and FMA) for the host's pair loops: the same formula, written
-///        once for a float (physics/neighbour_rows.h), evaluated for eight candidates at a time.
-///        Each lane's operations are the scalar ones (IEEE subtraction, product, fused
-///        multiply-add, exact int-to-float conversion of small integers, ordered comparisons),
-///        so every lane gives the scalar bits. Only where the host compiler (not nvcc) targets
-///        AVX2 and FMA: SEASPRING_SIMD8 is then 1, otherwise the scalar loops run.
+/// \brief Eight float and int lanes (AVX2 and FMA) for the host's pair loops: the same formula,
+///        written once for a float (physics/neighbour_rows.h, physics/cell_grid.h), evaluated
+///        for eight candidates or eight rows of cells at a time. Each lane's operations are the
+///        scalar ones (IEEE subtraction, sum, product, fused multiply-add, square root, floor,
+///        exact int-to-float conversion of small integers, ordered comparisons, selects, int
+///        sums, products' low bits, minima and maxima), so every lane gives the scalar bits.
+///        Only where the host compiler (not nvcc) targets AVX2 and FMA: SEASPRING_SIMD8 is
+///        then 1, otherwise the scalar loops run.
 #pragma once
 
 #if !defined(__CUDACC__) && defined(__AVX2__) && defined(__FMA__)

@@ -129,6 +129,7 @@ struct PairBatch {
         tsyz[kSps ? kCap : 1], tszz[kSps ? kCap : 1];
     float tux[kSps ? kCap : 1], tuy[kSps ? kCap : 1], tuz[kSps ? kCap : 1];
     int m = 0;
+    bool one_lane = false;  ///< one pair lane (addRow's `lanes`): every ln is 0
 
     SEASPRING_HD void flush(const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                             const InteractionInputs& in, const FluidConstants& c, FluidAccum* acc) {
@@ -159,7 +160,7 @@ struct PairBatch {
                 tux[q] = t.gv.ux; tuy[q] = t.gv.uy; tuz[q] = t.gv.uz;
             }
         }
-        for (int q = 0; q < n; ++q) {  // in candidate order
+        auto termsAt = [&](int q) {
             PairTerms t;
             t.mx = tmx[q];
             t.my = tmy[q];
@@ -178,7 +179,15 @@ struct PairBatch {
                 t.st = SymTensor{tsxx[q], tsxy[q], tsxz[q], tsyy[q], tsyz[q], tszz[q]};
                 t.gv = VelocityGradientTerm{tux[q], tuy[q], tuz[q]};
             }
-            addPairTerms<Opt, kBound>(acc[ln[q]], t);
+            return t;
+        };
+        // In candidate order. One pair lane: the sums in registers (the same operations).
+        if (one_lane) {
+            FluidAccum a = acc[0];
+            for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(a, termsAt(q));
+            acc[0] = a;
+        } else {
+            for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc[ln[q]], termsAt(q));
         }
         m = 0;
     }
@@ -186,10 +195,11 @@ struct PairBatch {
     /// Candidates [pb, pe), the first of them number `seen` of the block, whose particles end
     /// at `end` (the lane loads may read records [pe, end)): the neighbours among them are
     /// appended (branch-free: every candidate is written at m, m advances on a neighbour).
-    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t end, std::uint32_t seen, std::uint32_t lanes,
-                             const Float4& par, int cax, const Float4& va, float ovrhoa, float pressa,
+    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, [[maybe_unused]] std::uint32_t end, std::uint32_t seen,
+                             std::uint32_t lanes, const Float4& par, int cax, const Float4& va, float ovrhoa, float pressa,
                              const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, FluidAccum* acc) {
+        one_lane = lanes == 1u;
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
             int w = m;  // w <= m + k < kCap inside the loop
