@@ -37,7 +37,9 @@ struct Mask8 {
     unsigned bits() const { return unsigned(_mm256_movemask_ps(v)); }
 };
 /// Lanes k = 0..7 (base + k).
-inline Vec8i iota(int base) { return _mm256_add_epi32(_mm256_set1_epi32(base), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)); }
+inline Vec8i iota(int base) {
+    return _mm256_add_epi32(_mm256_set1_epi32(base), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+}
 
 inline Vec8f operator-(Vec8f a, Vec8f b) { return _mm256_sub_ps(a.v, b.v); }
 inline Vec8f operator*(Vec8f a, Vec8f b) { return _mm256_mul_ps(a.v, b.v); }

@@ -196,8 +196,8 @@ struct PairBatch {
     /// at `end` (the lane loads may read records [pe, end)): the neighbours among them are
     /// appended (branch-free: every candidate is written at m, m advances on a neighbour).
     SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, [[maybe_unused]] std::uint32_t end, std::uint32_t seen,
-                             std::uint32_t lanes, const Float4& par, int cax, const Float4& va, float ovrhoa, float pressa,
-                             const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
+                             std::uint32_t lanes, const Float4& par, int cax, const Float4& va, float ovrhoa,
+                             float pressa, const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, FluidAccum* acc) {
         one_lane = lanes == 1u;
         while (pb < pe) {
@@ -259,7 +259,8 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
     std::uint32_t seen = 0;
-    [[maybe_unused]] const std::uint32_t end = kCompact ? cell_start[g.cellCount()] : 0u;  // the block's end (the host's lane loads)
+    // The block's end (the host's lane loads may read up to it).
+    [[maybe_unused]] const std::uint32_t end = kCompact ? cell_start[g.cellCount()] : 0u;
     auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (kCompact)
             batch.addRow(pb, pe, end, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
@@ -415,7 +416,8 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
     ar_out = 0.f;
     visc_out = 0.f;
     if (in.near != nullptr && (in.near[linearCellOf(g, psa.w)] & kNearFluid) == 0) return;  // a dry wall
-    [[maybe_unused]] const std::uint32_t end = kCompact ? in.cell_start_fluid[g.cellCount()] : 0u;  // the fluid block's end
+    // The fluid block's end (the host's lane loads may read up to it).
+    [[maybe_unused]] const std::uint32_t end = kCompact ? in.cell_start_fluid[g.cellCount()] : 0u;
     auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (!kCompact) {
             for (std::uint32_t j = pb; j < pe; ++j) {

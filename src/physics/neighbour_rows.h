@@ -123,16 +123,27 @@ SEASPRING_HD_INLINE bool rowsAlongY(const SearchBox& b, const Float4& psa, float
     return y0 <= y1;
 }
 
+/// The z rows of `box` in reach of `psa` (ascending): fn(z, rowdz, gz, ylo, yhi) with rowdz
+/// the row frame's z shift, gz the z gap (cellGap) and [ylo, yhi] the y rows to test
+/// (rowsAlongY). forEachRowInReach's outer loop, shared with the host's RowTable.
+template <int kDim, class ZFn>
+SEASPRING_HD_INLINE void forEachZInReach(const SearchBox& box, const Float4& psa, const FluidConstants& c,
+                                         const CellGrid& g, ZFn fn) {
+    for (int z = box.z0; z <= box.z1; ++z) {
+        const float rowdz = g.cellsizef * float(box.caz - z);
+        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
+        int ylo, yhi;
+        if (!rowsAlongY<kDim>(box, psa, gz, c, g, ylo, yhi)) continue;
+        fn(z, rowdz, gz, ylo, yhi);
+    }
+}
+
 /// The rows of cells around `psa`'s cell that can hold a neighbour of it (by z then y,
 /// ascending), whatever the block: fn(c0, c1, par, cax) for each row in reach, [c0, c1) its
 /// linear cells (rowCells), `par` = psa's rowFrame for that row and `cax` = psa's cell in x (the
 /// arguments of pairOffset). The one row walk of every pair loop: forEachCandidateRow takes a
 /// block's candidates from it, and the host builds one RowTable per particle from it for all
 /// its blocks.
-template <int kDim, class ZFn>
-SEASPRING_HD_INLINE void forEachZInReach(const SearchBox& box, const Float4& psa, const FluidConstants& c,
-                                         const CellGrid& g, ZFn fn);
-
 template <int kDim, class RowFn>
 SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstants& c, const CellGrid& g, RowFn fn) {
     const SearchBox box = searchBox<kDim>(psa, g);
@@ -147,21 +158,6 @@ SEASPRING_HD_INLINE void forEachRowInReach(const Float4& psa, const FluidConstan
             fn(c0, c1, par, box.cax);
         }
     });
-}
-
-/// The z rows of `box` in reach of `psa` (ascending): fn(z, rowdz, gz, ylo, yhi) with rowdz
-/// the row frame's z shift, gz the z gap (cellGap) and [ylo, yhi] the y rows to test
-/// (rowsAlongY). forEachRowInReach's outer loop, shared with the host's RowTable.
-template <int kDim, class ZFn>
-SEASPRING_HD_INLINE void forEachZInReach(const SearchBox& box, const Float4& psa, const FluidConstants& c,
-                                         const CellGrid& g, ZFn fn) {
-    for (int z = box.z0; z <= box.z1; ++z) {
-        const float rowdz = g.cellsizef * float(box.caz - z);
-        const float gz = cellGap(z - box.caz, psa.z, g.cellsizef, box.margin);
-        int ylo, yhi;
-        if (!rowsAlongY<kDim>(box, psa, gz, c, g, ylo, yhi)) continue;
-        fn(z, rowdz, gz, ylo, yhi);
-    }
 }
 
 /// The rows in reach of `psa` (forEachRowInReach) in one block (`cell_start` of that block),
@@ -204,7 +200,8 @@ struct RowTable {
             for (int y0 = ylo; y0 <= yhi; y0 += 8) {
                 const simd::Vec8i y = simd::iota(y0);
                 simd::Vec8f gy(0.f);
-                if constexpr (kDim == 3) gy = cellGap(y - simd::Vec8i(box.cay), simd::Vec8f(psa.y), g.cellsizef, box.margin);
+                if constexpr (kDim == 3)
+                    gy = cellGap(y - simd::Vec8i(box.cay), simd::Vec8f(psa.y), g.cellsizef, box.margin);
                 simd::Vec8i x0, x1;
                 const simd::Mask8 in = rowSpan(g, box.cax, simd::Vec8f(psa.x), gy * gy + simd::Vec8f(gz2),
                                                c.ker.kernelsize2, box.margin, x0, x1);
@@ -213,7 +210,8 @@ struct RowTable {
                 const simd::Vec8i row = simd::Vec8i(g.ncx) * (y + simd::Vec8i(g.ncy) * simd::Vec8i(z));
                 simd::leftPackStore(c0 + n, row + x0, bits);
                 simd::leftPackStore(c1 + n, row + x1 + simd::Vec8i(1), bits);
-                simd::leftPackStore(py + n, simd::Vec8f(psa.y) + simd::Vec8f(g.cellsizef) * toFloat(simd::Vec8i(box.cay) - y), bits);
+                const simd::Vec8f rowdy = simd::Vec8f(g.cellsizef) * toFloat(simd::Vec8i(box.cay) - y);
+                simd::leftPackStore(py + n, simd::Vec8f(psa.y) + rowdy, bits);  // rowFrame's y
                 simd::leftPackStore(pz + n, simd::Vec8f(rowz), bits);
                 n += __builtin_popcount(bits);
             }

@@ -177,7 +177,8 @@ void checkCandidateRows(int div, std::mt19937& rng, double skin = 0.0) {
         }
         table.forEachCandidateRow(psa, identity.data(), [&](std::uint32_t, std::uint32_t, const Float4& par, int x) {
             tabled_frames.insert(tabled_frames.end(), {floatBitsToUint(par.x), floatBitsToUint(par.y),
-                                                       floatBitsToUint(par.z), floatBitsToUint(par.w), std::uint32_t(x)});
+                                                       floatBitsToUint(par.z), floatBitsToUint(par.w),
+                                                       std::uint32_t(x)});
         });
         ASSERT_EQ(tabled, walked) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
         ASSERT_EQ(tabled_frames, frames) << kDim << "D, cells of 2h/" << div << ", skin " << skin << ", particle " << a;
