@@ -129,9 +129,10 @@ struct PairBatch {
         tsyz[kSps ? kCap : 1], tszz[kSps ? kCap : 1];
     float tux[kSps ? kCap : 1], tuy[kSps ? kCap : 1], tuz[kSps ? kCap : 1];
     int m = 0;
-    bool one_lane = false;  ///< one pair lane (addRow's `lanes`): every ln is 0
 
-    SEASPRING_HD void flush(const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+    /// The batch's pairs: their terms in SIMD lanes, then each added to its pair lane's partial
+    /// (of `lanes`) in candidate order.
+    SEASPRING_HD void flush(std::uint32_t lanes, const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                             const InteractionInputs& in, const FluidConstants& c, FluidAccum* acc) {
         const int n = m;
         const std::uint32_t* __restrict sj = jj;
@@ -182,7 +183,7 @@ struct PairBatch {
             return t;
         };
         // In candidate order. One pair lane: the sums in registers (the same operations).
-        if (one_lane) {
+        if (lanes == 1u) {  // every ln is 0
             FluidAccum a = acc[0];
             for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(a, termsAt(q));
             acc[0] = a;
@@ -199,7 +200,6 @@ struct PairBatch {
                              std::uint32_t lanes, const Float4& par, int cax, const Float4& va, float ovrhoa,
                              float pressa, const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, FluidAccum* acc) {
-        one_lane = lanes == 1u;
         while (pb < pe) {
             const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
             int w = m;  // w <= m + k < kCap inside the loop
@@ -242,7 +242,7 @@ struct PairBatch {
             m = w;
             pb += std::uint32_t(take);
             seen += std::uint32_t(take);
-            if (m == kCap) flush(va, ovrhoa, pressa, taua, in, c, acc);
+            if (m == kCap) flush(lanes, va, ovrhoa, pressa, taua, in, c, acc);
         }
     }
 };
@@ -275,7 +275,7 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
         rows->forEachCandidateRow(psa, cell_start, row);
     else
         forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, row);
-    if constexpr (kCompact) batch.flush(va, ovrhoa, pressa, taua, in, c, acc);
+    if constexpr (kCompact) batch.flush(lanes, va, ovrhoa, pressa, taua, in, c, acc);
 }
 
 /// The partial sums of fluid particle `i` (fluid neighbours, then boundary neighbours): kCompact,
