@@ -26,7 +26,8 @@
 #        v2d  DualSPHysics' CaseDambreakVal2D as shipped (dp 0.01), first 0.5 s: loop seconds
 #        rtd  DualSPHysics' FlexStruc CaseRollingTankDeep as shipped, first 0.3 s: loop seconds
 # Variants of one build: ARGS_NAME (extra solver options of variant NAME's runs) and BIN_NAME
-# (the build it runs, default NAME), e.g. VARS="third dp" BIN_third=new BIN_dp=new
+# (the build it runs, default NAME) and ENV_NAME (environment settings of its runs, e.g.
+# ENV_t64="SEASPRING_PAIR_THREADS=64"), e.g. VARS="third dp" BIN_third=new BIN_dp=new
 # ARGS_third=-cellmode:third ARGS_dp=-cellmode:dp with build-dev/v_new.tar.xz.
 # Env: VARS, CASES (default "s4 s1"), ROUNDS (2), DEADLINE (500 s: no run starts after it),
 #      OUT (ab.csv: case,var,round,value,hash,output_s — run.json output_time_s).
@@ -34,6 +35,7 @@ set -u
 export LD_LIBRARY_PATH=$PWD/build-dev/lib
 binof() { local b="BIN_$1"; echo "${!b:-$1}"; }
 argsof() { local a="ARGS_$1"; echo "${!a:-}"; }
+envof() { local a="ENV_$1"; echo "${!a:-}"; }
 for v in $VARS; do b=$(binof $v); [[ -f build-dev/v_$b.tar.xz && ! -d vb/$b ]] && tar -xJf build-dev/v_$b.tar.xz; done
 first=$(binof ${VARS%% *})
 W=/tmp/wab; mkdir -p $W
@@ -66,7 +68,7 @@ for r in $(seq 1 ${ROUNDS:-2}); do
  for c in ${CASES:-s4 s1}; do
   for v in $VARS; do
    (( $(date +%s) > t_end )) && break 3
-   B=vb/$(binof $v)/seaspring; o=$W/o_${c}_$v; rm -rf $o; X=$(argsof $v)
+   B="env $(envof $v) vb/$(binof $v)/seaspring"; o=$W/o_${c}_$v; rm -rf $o; X=$(argsof $v)
    case $c in
     s4) $B $A $X -nsteps:${S4STEPS:-150} $W/s4m $o >/dev/null 2>&1; k=ns;;
     s1) $B $A $X -nsteps:${S1STEPS:-300} $W/s1m $o >/dev/null 2>&1; k=ns;;

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "cuda/cuda_check.cuh"
@@ -52,6 +53,13 @@ __global__ void __launch_bounds__(kThreads) forEachTwoKernel(std::uint32_t ba, s
         if (i < eb) fb(i);
     }
 }
+
+/// The block size a launch's kernel is compiled for (__launch_bounds__): Launch::kGpuBoundThreads
+/// where it has one (blocks smaller than the code's bound, solver/launch.h), else kGpuThreads.
+template <class Launch, class = void>
+constexpr int kBoundThreads = Launch::kGpuThreads;
+template <class Launch>
+constexpr int kBoundThreads<Launch, std::void_t<decltype(Launch::kGpuBoundThreads)>> = Launch::kGpuBoundThreads;
 
 constexpr int kReduceThreads = 256;
 /// Elements per thread below which a reduction takes fewer blocks than its maximum.
@@ -208,7 +216,7 @@ public:
     void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {
         if (e <= b) return;
         constexpr int kT = Launch::kGpuThreads;
-        forEachKernel<kT, F><<<unsigned((std::uint64_t(e - b) + kT - 1) / kT), kT>>>(b, e, f, gate_);
+        forEachKernel<kBoundThreads<Launch>, F><<<unsigned((std::uint64_t(e - b) + kT - 1) / kT), kT>>>(b, e, f, gate_);
         SEASPRING_CUDA_LAUNCH_CHECK();
     }
 
@@ -218,11 +226,12 @@ public:
     void forEachIndependent(std::uint32_t ba, std::uint32_t ea, const FA& fa, std::uint32_t bb, std::uint32_t eb,
                             const FB& fb) const {
         constexpr int kT = LaunchA::kGpuThreads;
-        if constexpr (kT == LaunchB::kGpuThreads) {
+        if constexpr (kT == LaunchB::kGpuThreads && kBoundThreads<LaunchA> == kBoundThreads<LaunchB>) {
             if (ea > ba && eb > bb) {
                 const std::uint32_t blocks_b = std::uint32_t((std::uint64_t(eb - bb) + kT - 1) / kT);
                 const std::uint32_t blocks_a = std::uint32_t((std::uint64_t(ea - ba) + kT - 1) / kT);
-                forEachTwoKernel<kT, FB, FA><<<blocks_a + blocks_b, kT>>>(bb, eb, fb, blocks_b, ba, ea, fa, gate_);
+                forEachTwoKernel<kBoundThreads<LaunchA>, FB, FA>
+                    <<<blocks_a + blocks_b, kT>>>(bb, eb, fb, blocks_b, ba, ea, fa, gate_);
                 SEASPRING_CUDA_LAUNCH_CHECK();
                 return;
             }
