@@ -123,7 +123,10 @@ struct PairBatch {
     std::uint32_t ln[kCap + kPad];
     float bx[kCap + kPad], by[kCap + kPad], bz[kCap + kPad], br[kCap + kPad];
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
-    float tmx[kCap], tmy[kCap], tmz[kCap], tcf[kSps ? 1 : kCap], tarv[kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
+    // m and the continuity term's v together (one 16-byte record per pair: the in-order sum
+    // reads them with one load).
+    alignas(16) float tm[kCap][4];
+    float tcf[kSps ? 1 : kCap], tarw[kCap], tdv[kCap], tdw[kCap], tvisc[kCap];
     float tcv[kLaminar ? kCap : 1], tdvx[kLaminar ? kCap : 1], tdvy[kLaminar ? kCap : 1], tdvz[kLaminar ? kCap : 1];
     float tsxx[kSps ? kCap : 1], tsxy[kSps ? kCap : 1], tsxz[kSps ? kCap : 1], tsyy[kSps ? kCap : 1],
         tsyz[kSps ? kCap : 1], tszz[kSps ? kCap : 1];
@@ -140,11 +143,11 @@ struct PairBatch {
         for (int q = 0; q < n; ++q) {  // SIMD lanes
             const PairTerms t =
                 fluidPairTerms<Opt, kBound>(sj[q], sx[q], sy[q], sz[q], sr[q], va, ovrhoa, pressa, taua, in, c);
-            tmx[q] = t.mx;
-            tmy[q] = t.my;
-            tmz[q] = t.mz;
+            tm[q][0] = t.mx;
+            tm[q][1] = t.my;
+            tm[q][2] = t.mz;
+            tm[q][3] = t.ar.v;
             if constexpr (!kSps) tcf[q] = t.cf;  // with SPS cf is not formed (PairTerms)
-            tarv[q] = t.ar.v;
             tarw[q] = t.ar.w;
             tdv[q] = t.delta.v;
             tdw[q] = t.delta.w;
@@ -163,11 +166,11 @@ struct PairBatch {
         }
         auto termsAt = [&](int q) {
             PairTerms t;
-            t.mx = tmx[q];
-            t.my = tmy[q];
-            t.mz = tmz[q];
+            t.mx = tm[q][0];
+            t.my = tm[q][1];
+            t.mz = tm[q][2];
             if constexpr (!kSps) t.cf = tcf[q];
-            t.ar = ProductTerm{tarv[q], tarw[q]};
+            t.ar = ProductTerm{tm[q][3], tarw[q]};
             t.delta = ProductTerm{tdv[q], tdw[q]};
             t.visc = tvisc[q];
             if constexpr (kLaminar) {
