@@ -199,4 +199,33 @@ SEASPRING_HD inline void fluidPair(std::uint32_t j, float drx, float dry, float 
     addPairTerms<Opt, kBound>(acc, fluidPairTerms<Opt, kBound>(j, drx, dry, drz, rr2, va, ovrhoa, pressa, taua, in, c));
 }
 
+/// What fluid neighbour j adds to DBC boundary particle a (boundParticleForces): continuity and
+/// the viscous dt measure.
+struct BoundPairTerms {
+    ProductTerm ar;  ///< m_b (v_ab . grad W) rho_a / rho_b (summed as ProductTerm::addTo)
+    float visc;      ///< viscous dt measure v_ab.r_ab / (r^2 + eta2)
+};
+
+/// The terms of boundary particle a's pair with fluid particle b = j at offset (drx, dry, drz),
+/// rr2 = r^2, inside the support. No branches on data (the host evaluates a batch in SIMD lanes).
+template <class Opt>
+SEASPRING_HD inline BoundPairTerms boundPairTerms(std::uint32_t j, float drx, float dry, float drz, float rr2,
+                                                  const Float4& va, const InteractionInputs& in,
+                                                  const FluidConstants& c) {
+    using K = typename Opt::Kernel;
+    const float fac = K::template gradFactor<true>(rr2, c.ker);  // grad W = fac r_ab
+    const Float4 vb = in.velrho[j];
+    const float dvx = va.x - vb.x, dvy = va.y - vb.y, dvz = va.z - vb.z;
+    const float dot_vr = fma32(drx, dvx, fma32(dry, dvy, drz * dvz));
+    const float dot_vf = fac * dot_vr;  // v_ab . grad W
+    return BoundPairTerms{ProductTerm{c.massfluid * dot_vf, va.w * in.press_ovrho[j].y},
+                          viscDtPair(dot_vr, reciprocalNormalRange(rr2 + c.eta2))};
+}
+
+/// Adds one boundary pair's terms to boundary particle a's sums (in neighbour order).
+SEASPRING_HD inline void addBoundPairTerms(float& ar, float& visc, const BoundPairTerms& t) {
+    ar = t.ar.addTo(ar);
+    visc = maxf(visc, t.visc);
+}
+
 }  // namespace seaspring::physics
