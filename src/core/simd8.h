@@ -80,6 +80,13 @@ inline Vec8i bitsAnd(Vec8f x, std::uint32_t mask) {
 struct Quad8 {
     Vec8f x, y, z, w;
 };
+/// Records k and k + 4 in ak (k = 0..3: low and high halves) as four lane vectors.
+inline Quad8 transposeQuads(__m256 a0, __m256 a1, __m256 a2, __m256 a3) {
+    const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);
+    const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);
+    return Quad8{_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
+                 _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+}
 inline Quad8 loadQuads(const float* p, int cnt) {
     __m128 q[8];
     for (int k = 0; k < 8; ++k) {
@@ -88,19 +95,13 @@ inline Quad8 loadQuads(const float* p, int cnt) {
     }
     const __m256 a0 = _mm256_set_m128(q[4], q[0]), a1 = _mm256_set_m128(q[5], q[1]);
     const __m256 a2 = _mm256_set_m128(q[6], q[2]), a3 = _mm256_set_m128(q[7], q[3]);
-    const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);
-    const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);
-    return Quad8{_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
-                 _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+    return transposeQuads(a0, a1, a2, a3);
 }
 /// loadQuads of eight records, all read (p[0, 32) must be readable).
 inline Quad8 loadQuads(const float* p) {
     const __m256 a0 = _mm256_loadu2_m128(p + 16, p), a1 = _mm256_loadu2_m128(p + 20, p + 4);
     const __m256 a2 = _mm256_loadu2_m128(p + 24, p + 8), a3 = _mm256_loadu2_m128(p + 28, p + 12);
-    const __m256 t0 = _mm256_unpacklo_ps(a0, a1), t1 = _mm256_unpackhi_ps(a0, a1);
-    const __m256 t2 = _mm256_unpacklo_ps(a2, a3), t3 = _mm256_unpackhi_ps(a2, a3);
-    return Quad8{_mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2)),
-                 _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2))};
+    return transposeQuads(a0, a1, a2, a3);
 }
 inline void store(float* p, Vec8f x) { _mm256_storeu_ps(p, x.v); }
 
