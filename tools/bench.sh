@@ -55,8 +55,17 @@
 #            costs that much simulated time first (at dp 1 mm more than one device call; a
 #            restart file written at that time, -checkpoint, and BENCH_ARGS=-restart:FILE avoid
 #            it; with -restart the rates count only the continuation's steps).
+#   sluicerun (optional; with sluice, after it) the same case at SLUICE_RUN_DP (default 0.003,
+#            about 750 k particles) run to its end (or the deadline), progress lines every
+#            SLUICE_RUN_PROGRESS (0.05) s of wall time: its loop time per simulated second over
+#            the whole run divided by its rate over the dp 1 mm window's simulated interval
+#            (interpolated between its progress lines) is the factor from the window's estimate
+#            to the whole run's; the table adds "whole-run est." = the window's hours x factor.
+#            It assumes the coarse run's later phases cost, relative to its start, what the fine
+#            run's would (more steps per simulated second after the impacts, disordered flow,
+#            more sorts, water leaving the domain).
 #
-# Every run: -sv:none -progress:0 (sluice: -progress:SLUICE_PROGRESS); the figures are read from
+# Every run: -sv:none -progress:0 (sluice, sluicerun: progress lines); the figures are read from
 # OUTDIR/run.json. Cases are generated once per dp with the new build's gencase and cached under
 # the work folder (regenerated when the gencase binary or the definition changes); the baseline
 # runs the same generated files.
@@ -84,7 +93,9 @@
 #      SHARED_CASES folder with the DualSPHysics inputs (default: the first of build-dev/shared-cases,
 #                   build-dev/shared/dualsphysics-cases, ../shared/dualsphysics-cases that has the file)
 #      MEM_NSTEPS   steps of the memory-only runs (default 40); GPU_INDEX nvidia-smi's GPU (default 0)
-#      SLUICE_T0, SLUICE_STEPS, SLUICE_PROGRESS (default 0.005 s, 600, 1 s), SLUICE_TEND (2)
+#      SLUICE_T0, SLUICE_STEPS, SLUICE_PROGRESS (default 0.005 s, 600, 1 s), SLUICE_TEND (2),
+#      SLUICE_RUN_DP (0.003), SLUICE_RUN_PROGRESS (0.05 s), SLUICE_RUN_SPAN (0.0065 s: the
+#      window's length when sluicerun runs without sluice)
 #      Testing sizes: SPHERIC_DP_1M/_A/_B (0.01, 0.006, 0.004), FLUID_TMAX (0.02), SMALL_TMAX
 #      (0.05), FSI3D_TMAX (0.02), FSI3D_DP (the case's), CPU_TMAX (0.02), SLUICE_DP (0.001),
 #      VIOLENT_T0 (0.6), VIOLENT_STEPS (300).
@@ -107,7 +118,7 @@ table_py="$root/tools/bench_table.py"
 read -r -a backend <<<"${BENCH_BACKEND:--gpu}"
 read -r -a extra <<<"${BENCH_ARGS:-}"
 [[ -n "${BENCH_NSTEPS:-}" ]] && extra+=("-nsteps:$BENCH_NSTEPS")
-all_parts=(fluid1m fluid violent memory sps small fsi3d cpu sluice)
+all_parts=(fluid1m fluid violent memory sps small fsi3d cpu sluice sluicerun)
 default_parts=(fluid sps memory small fsi3d)
 
 usage() { sed -n '2,/^set -uo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; }
@@ -116,7 +127,7 @@ for a in "$@"; do
   case "$a" in
     -h|--help) usage; exit 0 ;;
     default) want+=("${default_parts[@]}") ;;
-    fluid1m|fluid|violent|memory|sps|small|fsi3d|cpu|sluice) want+=("$a") ;;
+    fluid1m|fluid|violent|memory|sps|small|fsi3d|cpu|sluice|sluicerun) want+=("$a") ;;
     *) echo "bench.sh: unknown part '$a' (parts: ${all_parts[*]}; default: ${default_parts[*]})" >&2; exit 2 ;;
   esac
 done
@@ -335,6 +346,28 @@ sluice_one() {  # build round case
   grep -q "^sluice3d,$build,$round,ok," "$raw" || any_failed=1
 }
 
+# The coarse sluice's whole run (see the header): recorded as sluice3d_run.
+sluice_run_one() {  # build round case
+  local build=$1 round=$2 b=$new_bin left rc status=ok note=""
+  [[ $build == base ]] && b=$base_bin
+  local out="$work/runs/sluice3d_run_${build}_r$round"
+  left=$(remaining)
+  ((left < 30)) && { python3 "$table_py" record "$raw" sluice3d_run "$build" "$round" ns - --status SKIPPED \
+    --note "deadline reached"; any_failed=1; return; }
+  rm -rf "$out"
+  local cmd=("$b/seaspring" "${backend[@]}" "${extra[@]}" -sv:none -progress:"${SLUICE_RUN_PROGRESS:-0.05}"
+             -tmax:"${SLUICE_TEND:-2}" "$work/cases/$3" "$out")
+  echo "[$(stamp)] sluice3d_run $build round $round: ${cmd[*]}"
+  timeout -k 5 "$((left - 5))" "${cmd[@]}" >"$out.log" 2>&1
+  rc=$?
+  grep -E '^(t=|Finished|State hash)' "$out.log" | tail -n 3 | sed 's/^/  /'
+  [[ $rc == 124 || $rc == 137 ]] && note="stopped at the deadline"
+  [[ $rc != 0 && -z $note ]] && { status=FAILED; note="exit $rc"; tail -n 10 "$out.log" | sed 's/^/  | /'; }
+  python3 "$table_py" sluice-run "$raw" "$build" "$round" "$out.log" "$out/run.json" "${SLUICE_T0:-0.005}" \
+    "${SLUICE_RUN_SPAN:-0.0065}" --status "$status" --note "$note" || any_failed=1
+  grep -q "^sluice3d_run,$build,$round,ok," "$raw" || any_failed=1
+}
+
 main() {
   trap mem_stop EXIT
   echo "== SeaSpring speed benchmark (issue 16): parts ${want[*]}"
@@ -440,6 +473,16 @@ main() {
         for b in "${builds[@]}"; do sluice_one "$b" "$r" "sluice_dp$dps"; done
       done
     else no_case sluice3d; fi
+  fi
+
+  if selected sluicerun; then
+    local dpr=${SLUICE_RUN_DP:-0.003} r b
+    echo "== sluicerun: SluiceGate3D at dp $dpr, its whole ${SLUICE_TEND:-2} s (the window-to-whole-run factor)"
+    if ensure_case "sluice_dp$dpr" "$root/cases/sluice_gate/SluiceGate3D_Def.xml" "$dpr"; then
+      for ((r = 1; r <= rounds; ++r)); do
+        for b in "${builds[@]}"; do sluice_run_one "$b" "$r" "sluice_dp$dpr"; done
+      done
+    else no_case sluice3d_run; fi
   fi
 
   echo

@@ -14,6 +14,11 @@ Standard library only (the GPU machine's python3 has no numpy). Subcommands:
       at the first line with t >= T0 (bench.sh then stops the run), 1 otherwise.
   sluice RAW BUILD ROUND LOG T0 NSTEPS TEND [--status S] [--note N]
       append the sluice estimate (hours for TEND simulated seconds) from the progress lines.
+  sluice-run RAW BUILD ROUND LOG RUN_JSON T0 SPAN [--status S] [--note N]
+      append the coarse sluice's whole run (bench.sh sluicerun): its loop seconds per simulated
+      second over the whole run, divided by its rate over the dp 1 mm window's simulated
+      interval (that round's sluice3d row; else T0..T0+SPAN), is the factor from the window's
+      estimate to the whole run's.
   table RAW CSV_OUT
       print the table (fixed-width plain text) and write it as CSV.
   runs RAW
@@ -70,6 +75,7 @@ TARGETS = {
     "antoci2d": (0.26, None, "<= 0.26 ms (4x 1.04)"),
     "liao3d": (15.0, None, "<= 15 s"),
     "sluice3d": (1.5, None, "<= 1.5 h"),
+    "sluice3d_whole": (1.5, None, "<= 1.5 h"),
     "cpu_100K": (0.35 * 3.0, None, "<= 1.05 us (0.35x DS)"),
 }
 
@@ -87,6 +93,8 @@ BENCHES = [
     ("liao2d", "FlexStruc Liao 2D", "s per simulated s", "{:.2f}", None),
     ("liao3d", "FlexStruc Liao 3D, first 0.02 s", "s (loop)", "{:.2f}", None),
     ("sluice3d", "Sluice gate 3D dp 1 mm, 2 s (extrap.)", "h (estimate)", "{:.3f}", None),
+    ("sluice3d_run", "Sluice gate 3D coarse, its whole run", "whole/window rate", "{:.3f}", None),
+    ("sluice3d_whole", "Sluice gate 3D dp 1 mm, 2 s (whole-run est.)", "h (estimate)", "{:.3f}", None),
     ("cpu_100K", "CPU 2 threads Spheric2Dam_100K", "us/particle/step", "{:.3f}", 116658),
 ]
 MEM_PAIR = ("mem_peak_4.36M", "mem_peak_13.29M")
@@ -177,6 +185,7 @@ def read_progress(log):
 
 SLUICE_START = re.compile(r"window t=([0-9.]+)\.\.")
 SLUICE_FIRST_IMPACT = 0.2  # [s] the wave reaches the gate (cases/sluice_gate/README.md)
+SLUICE_TEND = 2.0  # [s] the case's TimeMax
 
 
 def sluice_window(pts, t0, nsteps):
@@ -220,6 +229,78 @@ def cmd_sluice(a):
     append_row(a.raw, row)
 
 
+def elapsed_at(pts, t):
+    """Loop seconds at simulated time t, linear between the progress lines around it."""
+    for (ta, _, ea), (tb, _, eb) in zip(pts, pts[1:]):
+        if ta <= t <= tb and tb > ta:
+            return ea + (eb - ea) * (t - ta) / (tb - ta)
+    return None
+
+
+def cmd_sluice_run(a):
+    np_, dev, pts = read_progress(a.log)
+    row = {"bench": "sluice3d_run", "build": a.build, "round": a.round, "particles": np_ or "",
+           "device": a.device or dev, "status": a.status, "note": a.note}
+    # The simulated interval of the dp 1 mm window of this round, when it ran.
+    ta, tb, src = a.t0, a.t0 + a.span, "T0..T0+SPAN"
+    if os.path.exists(a.raw):
+        with open(a.raw, newline="") as f:
+            fine = [r for r in csv.DictReader(f) if r["bench"] == "sluice3d" and r["build"] == a.build
+                    and r["round"] == a.round and r["status"] == "ok"]
+        m = fine and re.search(r"window t=([0-9.]+)\.\.([0-9.]+) s", fine[0]["note"])
+        if m:
+            ta, tb, src = float(m.group(1)), float(m.group(2)), "the dp 1 mm window"
+    # The whole run: run.json when it ended, else its last progress line (stopped at the deadline).
+    t_end = wall = None
+    try:
+        with open(a.run_json) as f:
+            r = json.load(f)
+        t_end, wall = r["physical_time_s"], r["loop_time_s"]
+        row.update(steps=r["steps"], state_hash=r.get("state_hash", ""), device=r.get("device", row["device"]))
+    except (OSError, ValueError, KeyError):
+        if pts:
+            t_end, wall = pts[-1][0], pts[-1][2]
+            row.update(steps=pts[-1][1])
+    ea, eb = elapsed_at(pts, ta), elapsed_at(pts, tb)
+    if a.status != "ok" or None in (ea, eb, t_end) or eb <= ea or not t_end:
+        row.update(status="FAILED" if a.status == "ok" else a.status,
+                   note=(a.note + "; " if a.note else "") + f"no rate: {len(pts)} progress lines, window {ta}..{tb} s")
+        append_row(a.raw, row)
+        return
+    rate_w, rate_all = (eb - ea) / (tb - ta), wall / t_end
+    # Loop seconds per simulated second by phase (the first impact at about 0.2 s).
+    phases, edges = [], [0.0, SLUICE_FIRST_IMPACT, 0.4, 0.6, 1.0, 1.5, 2.0]
+    for lo, hi in zip(edges, edges[1:]):
+        e0 = 0.0 if lo == 0.0 else elapsed_at(pts, lo)
+        e1 = elapsed_at(pts, hi) if hi < t_end else wall
+        if e0 is not None and e1 is not None and lo < t_end:
+            phases.append(f"{lo:g}-{min(hi, t_end):.3g} s {(e1 - e0) / (min(hi, t_end) - lo):.0f}")
+    row.update(physical_time_s=f"{t_end:.6g}", loop_time_s=f"{wall:.4f}", value=f"{rate_all / rate_w:.6g}",
+               note=(a.note + "; " if a.note else "")
+               + f"to t={t_end:.4g} s: {rate_all:.1f} s per simulated s over the run, {rate_w:.1f} over "
+               + f"t={ta:.5f}..{tb:.5f} s ({src}); by phase (s per simulated s): " + ", ".join(phases))
+    append_row(a.raw, row)
+
+
+def sluice_whole_rows(rows):
+    """The whole-run estimate of the dp 1 mm sluice per build and round: its window's estimate
+    (sluice3d) times the coarse run's whole/window factor (sluice3d_run) of the same round."""
+    out = []
+    for w in rows:
+        if w["bench"] != "sluice3d" or w["status"] != "ok":
+            continue
+        f = next((r for r in rows if r["bench"] == "sluice3d_run" and r["status"] == "ok"
+                  and r["build"] == w["build"] and r["round"] == w["round"]), None)
+        if f is None:
+            continue
+        h, k = float(w["value"]), float(f["value"])
+        out.append({k: "" for k in RAW_FIELDS} | {"bench": "sluice3d_whole", "build": w["build"], "round": w["round"], "status": "ok",
+                    "particles": w["particles"], "value": f"{h * k:.6g}", "device": w["device"],
+                    "note": f"window estimate {h:.3f} h x the coarse run's factor {k:.3f} "
+                            f"({f['particles']} particles, to t={float(f['physical_time_s']):.3g} s)"})
+    return out
+
+
 def ref_text(ref):
     v, unit = ref[0], ref[1]
     return (f"{v:.2f}" if v < 10 else f"{v:.1f}" if v < 100 else f"{v:.0f}") + " " + unit
@@ -237,6 +318,7 @@ def cmd_table(a):
     with open(a.raw, newline="") as f:
         rows = list(csv.DictReader(f))
     has_base = any(r["build"] == "base" for r in rows)
+    rows += sluice_whole_rows(rows)
 
     def ok(bench, build):
         return [r for r in rows if r["bench"] == bench and r["build"] == build and r["status"] == "ok"]
@@ -306,6 +388,12 @@ def cmd_table(a):
                              f"(t = {SLUICE_FIRST_IMPACT} s): issue 16 asks for one after it, and at dp 2 mm the "
                              "whole run cost 1.9x the rate of such an early window (docs/performance-large.md); "
                              "SLUICE_T0 >= 0.2 with BENCH_ARGS=-restart:FILE gives one")
+        if key == "sluice3d_whole" and new is not None:
+            ends = [float(r["physical_time_s"]) for r in ok("sluice3d_run", "new") if r["physical_time_s"]]
+            if ends and min(ends) < 0.99 * SLUICE_TEND:
+                met = "n/a"
+                notes.append(f"{label}: the coarse run reached t = {min(ends):.3g} s of {SLUICE_TEND:g}: its factor "
+                             "assumes the rest costs what its run so far did")
         devs = sorted({r["device"] for r in new_rows if r["device"]})
         hashes = sorted({r["state_hash"] for r in ok(key, "new") if r["state_hash"]})
         line = [label, parts, shown, unit]
@@ -323,7 +411,7 @@ def cmd_table(a):
             if r["status"] != "ok":
                 bad.setdefault((r["status"], r["note"]), []).append(f"{r['build']} {r['round']}")
         notes += [f"{label} {st} ({', '.join(runs)}): {nt or 'no detail'}" for (st, nt), runs in bad.items()]
-        if key == "sluice3d":
+        if key in ("sluice3d", "sluice3d_run", "sluice3d_whole"):
             notes += [f"{label} [{r['build']} round {r['round']}]: {r['note']}" for r in ok(key, "new") + ok(key, "base")]
     if len(table) == 1:
         print("(no results)")
@@ -384,6 +472,15 @@ def main():
     s.add_argument("--device", default="")
     s.add_argument("--note", default="")
     s.set_defaults(fn=cmd_sluice)
+    s = sub.add_parser("sluice-run")
+    for n in ("raw", "build", "round", "log", "run_json"):
+        s.add_argument(n)
+    s.add_argument("t0", type=float)
+    s.add_argument("span", type=float)
+    s.add_argument("--status", default="ok")
+    s.add_argument("--device", default="")
+    s.add_argument("--note", default="")
+    s.set_defaults(fn=cmd_sluice_run)
     s = sub.add_parser("table")
     s.add_argument("raw")
     s.add_argument("csv_out")
