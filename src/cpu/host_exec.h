@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/buffers.h"
@@ -110,18 +111,50 @@ public:
         }
     }
 
-    /// Sorts keys[b, e) ascending, carrying perm[b, e) (the identity on entry) along; keys are
-    /// unique, so the order is the only sorted order. keys_alt[b, e) is scratch (perm_alt is
-    /// not needed here). The result is in keys and perm.
-    void sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* /*perm_alt*/,
+    /// Sorts keys[b, e) ascending, carrying perm[b, e) along; keys are unique, so the order is
+    /// the only sorted order. The *_alt arrays are not needed here. The result is in keys and perm.
+    void sortPairs(std::uint64_t* keys, std::uint64_t* /*keys_alt*/, std::uint32_t* perm, std::uint32_t* /*perm_alt*/,
                    std::uint32_t b, std::uint32_t e) const {
         ungated("sortPairs");
-        const std::uint64_t* k = keys;
-        std::sort(perm + b, perm + e, [k](std::uint32_t x, std::uint32_t y) { return k[x] < k[y]; });
-        const std::uint32_t* p = perm;
-#pragma omp parallel for num_threads(threads_) schedule(static)
-        for (std::int64_t i = b; i < std::int64_t(e); ++i) keys_alt[i] = k[p[i]];
-        std::copy(keys_alt + b, keys_alt + e, keys + b);
+        pairs_.resize(e > b ? e - b : 0);
+        for (std::uint32_t i = b; i < e; ++i) pairs_[i - b] = {keys[i], perm[i]};
+        std::sort(pairs_.begin(), pairs_.end());
+        for (std::uint32_t i = b; i < e; ++i) {
+            keys[i] = pairs_[i - b].first;
+            perm[i] = pairs_[i - b].second;
+        }
+    }
+    /// As CudaExec::stayersFirst: perm_out[b, e) = the entries of perm[b, e) whose stays is set,
+    /// in order, then the others; keys_out[i] = keys[perm_out[i]]. Returns the number of
+    /// stayers when their keys ascend, else 0.
+    std::uint32_t stayersFirst(const std::uint64_t* keys, const std::uint32_t* perm, const std::uint8_t* stays,
+                               std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b,
+                               std::uint32_t e) const {
+        ungated("stayersFirst");
+        std::uint32_t o = b;
+        for (std::uint32_t i = b; i < e; ++i)
+            if (stays[i] != 0) perm_out[o++] = perm[i];
+        const std::uint32_t nstay = o - b;
+        for (std::uint32_t i = b; i < e; ++i)
+            if (stays[i] == 0) perm_out[o++] = perm[i];
+        for (std::uint32_t i = b; i < e; ++i) keys_out[i] = keys[perm_out[i]];
+        for (std::uint32_t i = b + 1; i < b + nstay; ++i)
+            if (keys_out[i - 1] >= keys_out[i]) return 0;
+        return nstay;
+    }
+    /// Merges the ascending keys [b, m) and [m, e) (perm carried along) into keys_out and
+    /// perm_out [b, e); keys are unique.
+    void mergePairs(const std::uint64_t* keys, const std::uint32_t* perm, std::uint32_t b, std::uint32_t m,
+                    std::uint32_t e, std::uint64_t* keys_out, std::uint32_t* perm_out) const {
+        ungated("mergePairs");
+        std::uint32_t i = b, j = m, o = b;
+        while (i < m && j < e) {
+            const std::uint32_t k = keys[j] < keys[i] ? j++ : i++;
+            keys_out[o] = keys[k];
+            perm_out[o++] = perm[k];
+        }
+        for (; i < m; ++i, ++o) keys_out[o] = keys[i], perm_out[o] = perm[i];
+        for (; j < e; ++j, ++o) keys_out[o] = keys[j], perm_out[o] = perm[j];
     }
     /// Size the sort's scratch for n keys (nothing to do on the host).
     void prepareSort(std::size_t) {}
@@ -144,6 +177,7 @@ public:
     void gate(const std::uint32_t* g) { gate_ = g; }
 
 private:
+    mutable std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs_;  ///< sortPairs' scratch
     bool gateClosed() const { return gate_ != nullptr && *gate_ != 0u; }
     void ungated(const char* what) const {
         if (gate_ != nullptr) throw std::logic_error(std::string("HostExec: ") + what + " run under a gate");

@@ -3,6 +3,9 @@
 /// \brief The non-template parts of the CUDA execution policy (cuda_exec.cuh).
 #include "cuda/cuda_exec.cuh"
 
+#include <cub/device/device_merge.cuh>
+#include <cub/device/device_partition.cuh>
+
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -19,6 +22,15 @@ __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::ui
         else hi = mid;
     }
     *out = lo;
+}
+
+__global__ void stayerKeysKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys,
+                                 const std::uint32_t* perm_out, std::uint64_t* keys_out, std::uint32_t* words) {
+    const std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= e) return;
+    const std::uint64_t k = keys[perm_out[i]];
+    keys_out[i] = k;
+    if (i > b && i - b < words[0] && keys[perm_out[i - 1]] >= k) words[1] = 1u;  // any writer writes 1
 }
 
 namespace {
@@ -52,6 +64,7 @@ CudaExec::CudaExec(int device, int host_threads) {
     block_max_ = blockMaxFromEnv();
     bond_lane_shift_ = bondLaneShiftFromEnv();
     lower_bound_.resize(1);
+    stayers_.resize(2);
     reduce_done_.resize(1);
     SEASPRING_CUDA_CHECK(cudaMemset(reduce_done_.data(), 0, sizeof(unsigned)));
     void* pinned = nullptr;
@@ -60,11 +73,23 @@ CudaExec::CudaExec(int device, int host_threads) {
 }
 
 void CudaExec::prepareSort(std::size_t n) {
-    std::size_t temp = 0;
-    cub::DoubleBuffer<std::uint64_t> k(nullptr, nullptr);  // a size query reads no buffer
+    // The scratch of the largest of the radix sort, the partition and the merge (size queries
+    // read no buffer).
+    std::size_t temp = 0, part = 0, merge = 0;
+    cub::DoubleBuffer<std::uint64_t> k(nullptr, nullptr);
     cub::DoubleBuffer<std::uint32_t> p(nullptr, nullptr);
     SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp, k, p, int(n)));
-    sort_temp_.resize(temp > 0 ? temp : 1);
+    SEASPRING_CUDA_CHECK(cub::DevicePartition::Flagged(nullptr, part, static_cast<const std::uint32_t*>(nullptr),
+                                                       static_cast<const std::uint8_t*>(nullptr),
+                                                       static_cast<std::uint32_t*>(nullptr),
+                                                       static_cast<std::uint32_t*>(nullptr), int(n)));
+    const std::uint64_t* kin = nullptr;
+    const std::uint32_t* pin = nullptr;
+    SEASPRING_CUDA_CHECK(cub::DeviceMerge::MergePairs(nullptr, merge, kin, pin, std::int64_t(n), kin, pin, std::int64_t(n),
+                                                      static_cast<std::uint64_t*>(nullptr),
+                                                      static_cast<std::uint32_t*>(nullptr)));
+    temp = std::max({temp, part, merge, std::size_t(1)});
+    sort_temp_.resize(temp);
 }
 
 void CudaExec::ungated(const char* what) const {
@@ -81,6 +106,38 @@ void CudaExec::sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint
     SEASPRING_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort_temp_.data(), temp, k, p, int(e - b)));
     if (k.Current() != keys + b) copy(keys + b, k.Current(), e - b);
     if (p.Current() != perm + b) copy(perm + b, p.Current(), e - b);
+}
+
+std::uint32_t CudaExec::stayersFirst(const std::uint64_t* keys, const std::uint32_t* perm, const std::uint8_t* stays,
+                                     std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b,
+                                     std::uint32_t e) const {
+    ungated("stayersFirst");
+    if (e <= b) return 0;
+    std::size_t temp = sort_temp_.size();
+    std::uint32_t* words = stayers_.data();
+    SEASPRING_CUDA_CHECK(cudaMemsetAsync(words, 0, 2 * sizeof(std::uint32_t)));
+    SEASPRING_CUDA_CHECK(cub::DevicePartition::Flagged(sort_temp_.data(), temp, perm + b, stays + b, perm_out + b, words,
+                                                       int(e - b)));
+    constexpr unsigned kThreads = 256;
+    stayerKeysKernel<<<(e - b + kThreads - 1) / kThreads, kThreads>>>(b, e, keys, perm_out, keys_out, words);
+    SEASPRING_CUDA_LAUNCH_CHECK();
+    SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), words, 2 * sizeof(std::uint32_t), cudaMemcpyDeviceToHost));
+    SEASPRING_CUDA_CHECK(cudaStreamSynchronize(0));
+    std::uint32_t w[2];
+    std::memcpy(w, readback_.get(), sizeof w);
+    return w[1] != 0 ? 0u : w[0];
+}
+
+void CudaExec::mergePairs(const std::uint64_t* keys, const std::uint32_t* perm, std::uint32_t b, std::uint32_t m,
+                          std::uint32_t e, std::uint64_t* keys_out, std::uint32_t* perm_out) const {
+    ungated("mergePairs");
+    if (e <= b) return;
+    std::size_t need = 0;
+    SEASPRING_CUDA_CHECK(cub::DeviceMerge::MergePairs(nullptr, need, keys + b, perm + b, std::int64_t(m - b), keys + m,
+                                                      perm + m, std::int64_t(e - m), keys_out + b, perm_out + b));
+    if (need > sort_temp_.size()) sort_temp_.resize(need);  // prepareSort sized it for the largest case
+    SEASPRING_CUDA_CHECK(cub::DeviceMerge::MergePairs(sort_temp_.data(), need, keys + b, perm + b, std::int64_t(m - b),
+                                                      keys + m, perm + m, std::int64_t(e - m), keys_out + b, perm_out + b));
 }
 
 std::uint32_t CudaExec::lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e,

@@ -116,6 +116,11 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     }
 }
 
+/// stayersFirst's gather and check: keys_out[i] = keys[perm_out[i]]; words[1] = 1 when two
+/// consecutive stayers (the first words[0] entries from b) do not ascend.
+__global__ void stayerKeysKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys,
+                                 const std::uint32_t* perm_out, std::uint64_t* keys_out, std::uint32_t* words);
+
 /// First index in [b, e) whose key is >= value (binary search, one thread).
 __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
                                  std::uint32_t* out);
@@ -298,6 +303,16 @@ public:
     /// second buffers); the result is in keys and perm.
     void sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* perm_alt,
                    std::uint32_t b, std::uint32_t e) const;
+    /// perm_out[b, e) = the entries of perm[b, e) whose stays is set, in their order (CUB's
+    /// stable partition), then the others; keys_out[i] = keys[perm_out[i]]. Returns the number
+    /// of stayers when their keys ascend, else 0 (one kernel checks while it gathers;
+    /// synchronises once).
+    std::uint32_t stayersFirst(const std::uint64_t* keys, const std::uint32_t* perm, const std::uint8_t* stays,
+                               std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b, std::uint32_t e) const;
+    /// Merges the ascending keys [b, m) and [m, e) (perm carried along) into keys_out and
+    /// perm_out [b, e) (CUB's merge; keys are unique).
+    void mergePairs(const std::uint64_t* keys, const std::uint32_t* perm, std::uint32_t b, std::uint32_t m,
+                    std::uint32_t e, std::uint64_t* keys_out, std::uint32_t* perm_out) const;
     /// First index in [b, e) of sorted keys whose key is >= value (synchronises).
     std::uint32_t lowerBound(const std::uint64_t* keys, std::uint32_t b, std::uint32_t e, std::uint64_t value) const;
 
@@ -359,6 +374,7 @@ private:
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
     DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)
     mutable DeviceBuffer<std::uint32_t> lower_bound_;
+    mutable DeviceBuffer<std::uint32_t> stayers_;  ///< stayersFirst's count and order check
 };
 
 }  // namespace seaspring::cuda

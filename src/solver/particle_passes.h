@@ -19,14 +19,20 @@ namespace seaspring::solver {
 
 // ---- divide: sort by (cell, id), cell ranges, "near" flags, PosCell ----------------------
 
+/// Particle i's sort key, perm[i] = i, and stays[i]: 1 when its key's cell is the cell its PosCell
+/// was assigned at the last sort (so the block's order, sorted by those cells and ids, holds
+/// for it), else 0 (particle_sort.h's merge takes the stayers as sorted after checking it).
 struct SortKeyPass {
     physics::ParticleView v;
     physics::CellGrid g;
     std::uint64_t* keys;
     std::uint32_t* perm;
+    std::uint8_t* stays;
     SEASPRING_HD void operator()(std::uint32_t i) const {
-        keys[i] = physics::sortKeyAt(i, v, g);
+        const std::uint64_t k = physics::sortKeyAt(i, v, g);
+        keys[i] = k;
         perm[i] = i;
+        stays[i] = std::uint32_t(k >> 32) == physics::linearCellOf(g, v.poscell[i].w) ? 1u : 0u;
     }
 };
 

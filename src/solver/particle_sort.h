@@ -18,15 +18,20 @@ namespace seaspring::solver {
 
 /// The divide's sort memory, in the force-evaluation fields (physics::kForceEval), which
 /// nothing reads between a divide and the next force evaluation: keys (8 bytes a particle) in
-/// press_ovrho, the permutation (4) in visc, the radix sort's second key and permutation
-/// buffers (8 + 4) and then the gather scratch (16) in acear.
+/// press_ovrho, the permutation (4) in visc, the second key and permutation buffers (8 + 4)
+/// and the stayer flags (1) and then the gather scratch (16) in acear.
 struct SortMemory {
     std::uint64_t* keys;
     std::uint32_t* perm;
     std::uint64_t* keys_alt;
     std::uint32_t* perm_alt;
+    std::uint8_t* stays;
     void* scratch;  ///< 16 bytes a particle
 };
+
+/// The merge (sortBlockRange) is taken while the movers are at most this share of a block
+/// (1 / kMergeMoverShare); above it the whole block is radix-sorted.
+constexpr std::uint32_t kMergeMoverShare = 4;
 
 template <class Store>
 SortMemory sortMemoryOf(Store& p) {
@@ -34,8 +39,9 @@ SortMemory sortMemoryOf(Store& p) {
                       sizeof(physics::Float4) == 2 * sizeof(std::uint64_t),
                   "the sort memory layout assumes these sizes");
     auto* alt = reinterpret_cast<std::uint64_t*>(p.acear.data());
+    auto* perm_alt = reinterpret_cast<std::uint32_t*>(alt + p.acear.size());
     return SortMemory{reinterpret_cast<std::uint64_t*>(p.press_ovrho.data()), reinterpret_cast<std::uint32_t*>(p.visc.data()),
-                      alt, reinterpret_cast<std::uint32_t*>(alt + p.acear.size()), alt};
+                      alt, perm_alt, reinterpret_cast<std::uint8_t*>(perm_alt + p.acear.size()), alt};
 }
 
 /// Words [k, k + K) of every element of [b, e) reordered by the permutation, through the scratch.
@@ -77,6 +83,28 @@ void gatherSorted(Exec& exec, BufT& arr, std::uint32_t b, std::uint32_t e, const
     }
 }
 
+/// Sorts the keys and the identity permutation of [b, e) (SortKeyPass) into m.keys and m.perm.
+/// Between two sorts most particles stay in the cell of their last sort, so the block's order
+/// still holds for them: their indices are taken in that order (exec.stayersFirst, which checks
+/// that their keys are ascending), only the movers are radix-sorted, and the two sequences are
+/// merged. Keys are unique, so the result is the one sorted order whichever way: the same
+/// permutation as a sort of the whole block, which runs when the check fails, when more than
+/// 1 / kMergeMoverShare of the block moved, or when no order is kept (the first sort).
+/// Returns true when it merged. m.stays[b, e) is read; m.keys_alt and m.perm_alt are scratch.
+template <class Exec>
+bool sortKeys(Exec& exec, const SortMemory& m, std::uint32_t b, std::uint32_t e) {
+    const std::uint32_t n = e - b;
+    const std::uint32_t nstay = e > b ? exec.stayersFirst(m.keys, m.perm, m.stays, m.keys_alt, m.perm_alt, b, e) : 0;
+    if (nstay == 0 || n - nstay > n / kMergeMoverShare) {
+        exec.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
+        return false;
+    }
+    // The movers, [b + nstay, e) of the *_alt arrays, sorted there (m.keys and m.perm: its second buffers).
+    exec.sortPairs(m.keys_alt, m.keys, m.perm_alt, m.perm, b + nstay, e);
+    exec.mergePairs(m.keys_alt, m.perm_alt, b, b + nstay, e, m.keys, m.perm);
+    return true;
+}
+
 /// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort (kSorted;
 /// kSortedPre when `pre`); rebuilds the cell ranges `cs` for the active part. Returns its end.
 template <class Exec, class Store, class CellStarts>
@@ -84,8 +112,8 @@ std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, s
                              CellStarts& cs, bool pre) {
     const SortMemory m = sortMemoryOf(p);
     if (e > b) {
-        exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm});
-        exec.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
+        exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm, m.stays});
+        sortKeys(exec, m, b, e);
         p.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
             if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gatherSorted(exec, buf, b, e, m);
         });
