@@ -125,12 +125,14 @@ public:
         }
     }
     /// As CudaExec::stayersFirst: perm_out[b, e) = the entries of perm[b, e) whose stays is set,
-    /// in order, then the others; keys_out[i] = keys[perm_out[i]]. Returns the number of
-    /// stayers when their keys ascend, else 0.
+    /// in order, then the others; keys_out[i] = keys[perm_out[i]]; n_at_least = the number of
+    /// keys >= at_least. Returns the number of stayers when their keys ascend, else 0.
     std::uint32_t stayersFirst(const std::uint64_t* keys, const std::uint32_t* perm, const std::uint8_t* stays,
-                               std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b,
-                               std::uint32_t e) const {
+                               std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b, std::uint32_t e,
+                               std::uint64_t at_least, std::uint32_t& n_at_least) const {
         ungated("stayersFirst");
+        n_at_least = 0;
+        for (std::uint32_t i = b; i < e; ++i) n_at_least += keys[i] >= at_least ? 1u : 0u;
         std::uint32_t o = b;
         for (std::uint32_t i = b; i < e; ++i)
             if (stays[i] != 0) perm_out[o++] = perm[i];

@@ -25,12 +25,14 @@ __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::ui
 }
 
 __global__ void stayerKeysKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys,
-                                 const std::uint32_t* perm_out, std::uint64_t* keys_out, std::uint32_t* words) {
+                                 const std::uint32_t* perm_out, std::uint64_t* keys_out, std::uint64_t at_least,
+                                 std::uint32_t* words) {
     const std::uint32_t i = b + blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= e) return;
     const std::uint64_t k = keys[perm_out[i]];
     keys_out[i] = k;
     if (i > b && i - b < words[0] && keys[perm_out[i - 1]] >= k) words[1] = 1u;  // any writer writes 1
+    if (k >= at_least) atomicAdd(words + 2, 1u);
 }
 
 namespace {
@@ -64,7 +66,7 @@ CudaExec::CudaExec(int device, int host_threads) {
     block_max_ = blockMaxFromEnv();
     bond_lane_shift_ = bondLaneShiftFromEnv();
     lower_bound_.resize(1);
-    stayers_.resize(2);
+    stayers_.resize(3);
     reduce_done_.resize(1);
     SEASPRING_CUDA_CHECK(cudaMemset(reduce_done_.data(), 0, sizeof(unsigned)));
     void* pinned = nullptr;
@@ -109,22 +111,24 @@ void CudaExec::sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint
 }
 
 std::uint32_t CudaExec::stayersFirst(const std::uint64_t* keys, const std::uint32_t* perm, const std::uint8_t* stays,
-                                     std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b,
-                                     std::uint32_t e) const {
+                                     std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b, std::uint32_t e,
+                                     std::uint64_t at_least, std::uint32_t& n_at_least) const {
     ungated("stayersFirst");
+    n_at_least = 0;
     if (e <= b) return 0;
     std::size_t temp = sort_temp_.size();
     std::uint32_t* words = stayers_.data();
-    SEASPRING_CUDA_CHECK(cudaMemsetAsync(words, 0, 2 * sizeof(std::uint32_t)));
+    SEASPRING_CUDA_CHECK(cudaMemsetAsync(words, 0, 3 * sizeof(std::uint32_t)));
     SEASPRING_CUDA_CHECK(cub::DevicePartition::Flagged(sort_temp_.data(), temp, perm + b, stays + b, perm_out + b, words,
                                                        int(e - b)));
     constexpr unsigned kThreads = 256;
-    stayerKeysKernel<<<(e - b + kThreads - 1) / kThreads, kThreads>>>(b, e, keys, perm_out, keys_out, words);
+    stayerKeysKernel<<<(e - b + kThreads - 1) / kThreads, kThreads>>>(b, e, keys, perm_out, keys_out, at_least, words);
     SEASPRING_CUDA_LAUNCH_CHECK();
-    SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), words, 2 * sizeof(std::uint32_t), cudaMemcpyDeviceToHost));
+    SEASPRING_CUDA_CHECK(cudaMemcpyAsync(readback_.get(), words, 3 * sizeof(std::uint32_t), cudaMemcpyDeviceToHost));
     SEASPRING_CUDA_CHECK(cudaStreamSynchronize(0));
-    std::uint32_t w[2];
+    std::uint32_t w[3];
     std::memcpy(w, readback_.get(), sizeof w);
+    n_at_least = w[2];
     return w[1] != 0 ? 0u : w[0];
 }
 

@@ -116,10 +116,12 @@ __global__ void __launch_bounds__(kReduceThreads) reduceKernel(std::uint32_t b, 
     }
 }
 
-/// stayersFirst's gather and check: keys_out[i] = keys[perm_out[i]]; words[1] = 1 when two
-/// consecutive stayers (the first words[0] entries from b) do not ascend.
+/// stayersFirst's gather, check and count: keys_out[i] = keys[perm_out[i]]; words[1] = 1 when
+/// two consecutive stayers (the first words[0] entries from b) do not ascend; words[2] += 1 for
+/// each key >= at_least (an integer count: the same in any order).
 __global__ void stayerKeysKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys,
-                                 const std::uint32_t* perm_out, std::uint64_t* keys_out, std::uint32_t* words);
+                                 const std::uint32_t* perm_out, std::uint64_t* keys_out, std::uint64_t at_least,
+                                 std::uint32_t* words);
 
 /// First index in [b, e) whose key is >= value (binary search, one thread).
 __global__ void lowerBoundKernel(std::uint32_t b, std::uint32_t e, const std::uint64_t* keys, std::uint64_t value,
@@ -304,11 +306,12 @@ public:
     void sortPairs(std::uint64_t* keys, std::uint64_t* keys_alt, std::uint32_t* perm, std::uint32_t* perm_alt,
                    std::uint32_t b, std::uint32_t e) const;
     /// perm_out[b, e) = the entries of perm[b, e) whose stays is set, in their order (CUB's
-    /// stable partition), then the others; keys_out[i] = keys[perm_out[i]]. Returns the number
-    /// of stayers when their keys ascend, else 0 (one kernel checks while it gathers;
-    /// synchronises once).
+    /// stable partition), then the others; keys_out[i] = keys[perm_out[i]]; n_at_least = the
+    /// number of keys >= at_least. Returns the number of stayers when their keys ascend, else 0
+    /// (one kernel checks and counts while it gathers; synchronises once).
     std::uint32_t stayersFirst(const std::uint64_t* keys, const std::uint32_t* perm, const std::uint8_t* stays,
-                               std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b, std::uint32_t e) const;
+                               std::uint64_t* keys_out, std::uint32_t* perm_out, std::uint32_t b, std::uint32_t e,
+                               std::uint64_t at_least, std::uint32_t& n_at_least) const;
     /// Merges the ascending keys [b, m) and [m, e) (perm carried along) into keys_out and
     /// perm_out [b, e) (CUB's merge; keys are unique).
     void mergePairs(const std::uint64_t* keys, const std::uint32_t* perm, std::uint32_t b, std::uint32_t m,
@@ -374,7 +377,7 @@ private:
     mutable DeviceBuffer<std::uint8_t> reduce_scratch_, sort_temp_;
     DeviceBuffer<unsigned> reduce_done_;  ///< reduceKernel's ticket (0 between reductions)
     mutable DeviceBuffer<std::uint32_t> lower_bound_;
-    mutable DeviceBuffer<std::uint32_t> stayers_;  ///< stayersFirst's count and order check
+    mutable DeviceBuffer<std::uint32_t> stayers_;  ///< stayersFirst's counts and order check
 };
 
 }  // namespace seaspring::cuda

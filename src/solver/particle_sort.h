@@ -83,26 +83,33 @@ void gatherSorted(Exec& exec, BufT& arr, std::uint32_t b, std::uint32_t e, const
     }
 }
 
-/// Sorts the keys and the identity permutation of [b, e) (SortKeyPass) into m.keys and m.perm.
-/// Between two sorts most particles stay in the cell of their last sort, so the block's order
-/// still holds for them: their indices are taken in that order (exec.stayersFirst, which checks
-/// that their keys are ascending), only the movers are radix-sorted, and the two sequences are
-/// merged. Keys are unique, so the result is the one sorted order whichever way: the same
-/// permutation as a sort of the whole block, which runs when the check fails, when more than
-/// 1 / kMergeMoverShare of the block moved, or when no order is kept (the first sort).
-/// Returns true when it merged. m.stays[b, e) is read; m.keys_alt and m.perm_alt are scratch.
+/// Sorts the keys and the identity permutation of [b, e) (SortKeyPass) into m.keys and m.perm;
+/// returns the end of the active part (the first key >= `excluded`). Between two sorts most
+/// particles stay in the cell of their last sort, so the block's order still holds for them:
+/// their indices are taken in that order (exec.stayersFirst, which checks that their keys
+/// ascend and counts the keys >= `excluded`), only the movers are radix-sorted, and the two
+/// sequences are merged. Keys are unique, so the result is the one sorted order whichever way:
+/// the same permutation as a sort of the whole block, which runs (and exec.lowerBound finds the
+/// active end) when the check fails, when more than 1 / kMergeMoverShare of the block moved, or
+/// when no order is kept (the first sort). *merged (when given) says which way it went.
+/// m.stays[b, e) is read; m.keys_alt and m.perm_alt are scratch.
 template <class Exec>
-bool sortKeys(Exec& exec, const SortMemory& m, std::uint32_t b, std::uint32_t e) {
+std::uint32_t sortKeys(Exec& exec, const SortMemory& m, std::uint32_t b, std::uint32_t e, std::uint64_t excluded,
+                       bool* merged = nullptr) {
+    if (merged) *merged = false;
+    if (e <= b) return b;
     const std::uint32_t n = e - b;
-    const std::uint32_t nstay = e > b ? exec.stayersFirst(m.keys, m.perm, m.stays, m.keys_alt, m.perm_alt, b, e) : 0;
+    std::uint32_t nexcl = 0;
+    const std::uint32_t nstay = exec.stayersFirst(m.keys, m.perm, m.stays, m.keys_alt, m.perm_alt, b, e, excluded, nexcl);
     if (nstay == 0 || n - nstay > n / kMergeMoverShare) {
         exec.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
-        return false;
+        return exec.lowerBound(m.keys, b, e, excluded);
     }
     // The movers, [b + nstay, e) of the *_alt arrays, sorted there (m.keys and m.perm: its second buffers).
     exec.sortPairs(m.keys_alt, m.keys, m.perm_alt, m.perm, b + nstay, e);
     exec.mergePairs(m.keys_alt, m.perm_alt, b, b + nstay, e, m.keys, m.perm);
-    return true;
+    if (merged) *merged = true;
+    return e - nexcl;
 }
 
 /// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort (kSorted;
@@ -111,14 +118,14 @@ template <class Exec, class Store, class CellStarts>
 std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, std::uint32_t b, std::uint32_t e,
                              CellStarts& cs, bool pre) {
     const SortMemory m = sortMemoryOf(p);
+    std::uint32_t active_end = b;
     if (e > b) {
         exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm, m.stays});
-        sortKeys(exec, m, b, e);
+        active_end = sortKeys(exec, m, b, e, physics::kExcludedCell << 32);
         p.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
             if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gatherSorted(exec, buf, b, e, m);
         });
     }
-    const std::uint32_t active_end = e > b ? exec.lowerBound(m.keys, b, e, physics::kExcludedCell << 32) : b;
     exec.template forEach<LaunchDefault>(0u, std::uint32_t(cs.size()), CellStartOuterPass{b, active_end, m.keys, cs.data()});
     exec.template forEach<LaunchDefault>(b, active_end, CellStartFillPass{b, m.keys, cs.data()});
     return active_end;

@@ -2,7 +2,8 @@
 /// \file test_sort_merge.cpp
 /// \brief The divide's sort (solver::sortKeys) with the host's execution policy: the stayers'
 ///        order kept, the movers sorted and merged, gives the one sorted order of the keys and
-///        the permutation that goes with it, as a sort of the whole block; stayer flags that do
+///        the permutation that goes with it, as a sort of the whole block, and the end of the
+///        active part (excluded keys last) counted on the way; stayer flags that do
 ///        not hold (stayers whose keys do not ascend), too many movers and blocks with no
 ///        stayer fall back to that sort. The GPU's primitives are checked through the solver:
 ///        the typed BackendPhases tests compare every divide's state with the host's.
@@ -73,8 +74,12 @@ void expectSorted(Block& blk, bool expect_merge) {
     std::vector<std::uint32_t> p;
     blk.expected(k, p);
     const std::vector<std::uint64_t> before(blk.keys);
+    const std::uint64_t excluded = 0xFFFFFFFFull << 32;
+    const std::uint32_t active_end = blk.b + std::uint32_t(std::lower_bound(k.begin(), k.end(), excluded) - k.begin());
     HostExec exec(2);
-    EXPECT_EQ(sortKeys(exec, blk.memory(), blk.b, blk.e), expect_merge);
+    bool merged = !expect_merge;
+    EXPECT_EQ(sortKeys(exec, blk.memory(), blk.b, blk.e, excluded, &merged), active_end) << "the active part's end";
+    EXPECT_EQ(merged, expect_merge);
     for (std::uint32_t i = blk.b; i < blk.e; ++i) {
         ASSERT_EQ(blk.keys[i], k[i - blk.b]) << "key at " << i;
         ASSERT_EQ(blk.perm[i], p[i - blk.b]) << "permutation at " << i;
