@@ -6,8 +6,8 @@
 ///        `Exec`: cpu::HostExec (OpenMP loops, host memory) or cuda::CudaExec (kernel launches,
 ///        device memory). An Exec provides Buffer<T>, forEach<Launch>(b, e, pass),
 ///        forEachIndependent (two passes that may overlap), reduce(b, e, init, value, combine),
-///        sequence(work, widest, body), sortPairs,
-///        lowerBound, copy and synchronize; everything else is here, so both backends run the
+///        sequence(work, widest, body), the sort's steps (stayersFirst, sortPairs, mergePairs,
+///        lowerBound: particle_sort.h), copy and synchronize; everything else is here, so both backends run the
 ///        same passes in the same order and give the same bits.
 #pragma once
 
