@@ -368,6 +368,16 @@ sluice_run_one() {  # build round case
   grep -q "^sluice3d_run,$build,$round,ok," "$raw" || any_failed=1
 }
 
+# A sluice part: its case at dp, then fn for every round and build.
+sluice_rounds() {  # fn dp bench
+  local r b
+  if ensure_case "sluice_dp$2" "$root/cases/sluice_gate/SluiceGate3D_Def.xml" "$2"; then
+    for ((r = 1; r <= rounds; ++r)); do
+      for b in "${builds[@]}"; do "$1" "$b" "$r" "sluice_dp$2"; done
+    done
+  else no_case "$3"; fi
+}
+
 main() {
   trap mem_stop EXIT
   echo "== SeaSpring speed benchmark (issue 16): parts ${want[*]}"
@@ -466,23 +476,12 @@ main() {
   fi
 
   if selected sluice; then
-    local dps=${SLUICE_DP:-0.001} r b
-    echo "== sluice: SluiceGate3D at dp $dps (about 13.5 M particles at 0.001), estimate of its ${SLUICE_TEND:-2} s"
-    if ensure_case "sluice_dp$dps" "$root/cases/sluice_gate/SluiceGate3D_Def.xml" "$dps"; then
-      for ((r = 1; r <= rounds; ++r)); do
-        for b in "${builds[@]}"; do sluice_one "$b" "$r" "sluice_dp$dps"; done
-      done
-    else no_case sluice3d; fi
+    echo "== sluice: SluiceGate3D at dp ${SLUICE_DP:-0.001} (about 13.5 M particles at 0.001), estimate of its ${SLUICE_TEND:-2} s"
+    sluice_rounds sluice_one "${SLUICE_DP:-0.001}" sluice3d
   fi
-
   if selected sluicerun; then
-    local dpr=${SLUICE_RUN_DP:-0.003} r b
-    echo "== sluicerun: SluiceGate3D at dp $dpr, its whole ${SLUICE_TEND:-2} s (the window-to-whole-run factor)"
-    if ensure_case "sluice_dp$dpr" "$root/cases/sluice_gate/SluiceGate3D_Def.xml" "$dpr"; then
-      for ((r = 1; r <= rounds; ++r)); do
-        for b in "${builds[@]}"; do sluice_run_one "$b" "$r" "sluice_dp$dpr"; done
-      done
-    else no_case sluice3d_run; fi
+    echo "== sluicerun: SluiceGate3D at dp ${SLUICE_RUN_DP:-0.003}, its whole ${SLUICE_TEND:-2} s (the window-to-whole-run factor)"
+    sluice_rounds sluice_run_one "${SLUICE_RUN_DP:-0.003}" sluice3d_run
   fi
 
   echo

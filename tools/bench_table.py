@@ -462,25 +462,17 @@ def main():
     s.add_argument("t0", type=float)
     s.add_argument("nsteps", type=int)
     s.set_defaults(fn=cmd_sluice_done)
-    s = sub.add_parser("sluice")
-    for n in ("raw", "build", "round", "log"):
-        s.add_argument(n)
-    s.add_argument("t0", type=float)
-    s.add_argument("nsteps", type=int)
-    s.add_argument("tend", type=float)
-    s.add_argument("--status", default="ok")
-    s.add_argument("--device", default="")
-    s.add_argument("--note", default="")
-    s.set_defaults(fn=cmd_sluice)
-    s = sub.add_parser("sluice-run")
-    for n in ("raw", "build", "round", "log", "run_json"):
-        s.add_argument(n)
-    s.add_argument("t0", type=float)
-    s.add_argument("span", type=float)
-    s.add_argument("--status", default="ok")
-    s.add_argument("--device", default="")
-    s.add_argument("--note", default="")
-    s.set_defaults(fn=cmd_sluice_run)
+    # The two sluice records: positional names (typed where given), then --status, --device, --note.
+    for name, fn, args in (("sluice", cmd_sluice, ("raw", "build", "round", "log", ("t0", float), ("nsteps", int),
+                                                   ("tend", float))),
+                           ("sluice-run", cmd_sluice_run, ("raw", "build", "round", "log", "run_json", ("t0", float),
+                                                           ("span", float)))):
+        s = sub.add_parser(name)
+        for n in args:
+            s.add_argument(n) if isinstance(n, str) else s.add_argument(n[0], type=n[1])
+        for opt, default in (("--status", "ok"), ("--device", ""), ("--note", "")):
+            s.add_argument(opt, default=default)
+        s.set_defaults(fn=fn)
     s = sub.add_parser("table")
     s.add_argument("raw")
     s.add_argument("csv_out")
