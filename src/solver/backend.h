@@ -108,6 +108,8 @@ struct DivideCounts {
     /// Sorts of the boundary block (cases with moving boundaries or solids; with a skin, only the
     /// divides at which one of its particles left its grown cell).
     std::uint64_t boundary_sorts = 0;
+    /// Block sorts that kept the stayers' order and merged the movers in (solver/particle_sort.h).
+    std::uint64_t merged_sorts = 0;
 };
 
 class Backend {

@@ -84,6 +84,7 @@ public:
         assignFrom(moving_object_, s.moving_object);
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
         exec_.prepareSort(np);
+        sort_merge_min_ = sortMergeMinFromEnv();
         if (!s.solid.empty()) solid_.init(s.solid);
         if (s.mdbc.enabled) {
             assignFrom(mdbc_normal0_, s.mdbc.normal0);
@@ -435,7 +436,10 @@ private:
 
     /// See solver/particle_sort.h.
     std::uint32_t sortRange(std::uint32_t b, std::uint32_t e, Buf<std::uint32_t>& cs, bool pre) {
-        return sortBlockRange(exec_, p_, setup_.grid, b, e, cs, pre);
+        bool merged = false;
+        const std::uint32_t end = sortBlockRange(exec_, p_, setup_.grid, b, e, cs, pre, sort_merge_min_, &merged);
+        counts_.merged_sorts += merged ? 1u : 0u;
+        return end;
     }
     void nearFlags(const Buf<std::uint32_t>& cs, std::uint8_t bit) {
         nearFlagsOfBlock(exec_, setup_.grid, cs, bit, near_, near_tmp_);
@@ -468,6 +472,7 @@ private:
     bool solid_end_checked_ = false;
     BackendSetup setup_;
     std::uint32_t nbound_ = 0, nfluid_ = 0;
+    std::uint32_t sort_merge_min_ = kMergeMinParticles;  ///< sortBlockRange merges from this block size
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)
     DivideCounts counts_;
     ParticleStore<Exec::template Buffer> p_;

@@ -37,6 +37,7 @@ void Engine<Exec>::saveState(CheckpointData& out) {
     out.ints["engine/divides"] = (long long)counts_.divides;
     out.ints["engine/sorts"] = (long long)counts_.sorts;
     out.ints["engine/boundary_sorts"] = (long long)counts_.boundary_sorts;
+    out.ints["engine/merged_sorts"] = (long long)counts_.merged_sorts;
 }
 
 template <class Exec>
@@ -73,6 +74,7 @@ void Engine<Exec>::loadState(const CheckpointData& in) {
     // A count only (files written before it was kept have none).
     counts_.boundary_sorts =
         in.has("engine/boundary_sorts") ? (unsigned long long)in.integer("engine/boundary_sorts") : 0ull;
+    counts_.merged_sorts = in.has("engine/merged_sorts") ? (unsigned long long)in.integer("engine/merged_sorts") : 0ull;
 }
 
 }  // namespace seaspring::solver

@@ -6,7 +6,9 @@
 ///        execution policy `Exec` and the particle store, as the rest of the engine.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <type_traits>
 
 #include "physics/cell_grid.h"
@@ -29,9 +31,23 @@ struct SortMemory {
     void* scratch;  ///< 16 bytes a particle
 };
 
-/// The merge (sortBlockRange) is taken while the movers are at most this share of a block
+/// The merge (sortKeys) is taken while the movers are at most this share of a block
 /// (1 / kMergeMoverShare); above it the whole block is radix-sorted.
 constexpr std::uint32_t kMergeMoverShare = 4;
+/// Blocks smaller than this are radix-sorted whole: there the merge's extra launches and
+/// readback cost more than the radix passes they save (NVIDIA H200, FlexStruc Liao 2D, 28 k
+/// particles: 1.04-1.08 of the whole sort; docs/performance-large.md, twenty-sixth session).
+constexpr std::uint32_t kMergeMinParticles = 1u << 17;
+
+/// SEASPRING_SORT_MERGE_MIN (a non-negative integer: the tests merge their small blocks with 1),
+/// else kMergeMinParticles; read once per engine.
+inline std::uint32_t sortMergeMinFromEnv() {
+    const char* env = std::getenv("SEASPRING_SORT_MERGE_MIN");
+    if (env == nullptr || *env == '\0') return kMergeMinParticles;
+    char* end = nullptr;
+    const unsigned long v = std::strtoul(env, &end, 10);
+    return *end == '\0' ? std::uint32_t(std::min<unsigned long>(v, 0xffffffffUL)) : kMergeMinParticles;
+}
 
 template <class Store>
 SortMemory sortMemoryOf(Store& p) {
@@ -91,16 +107,18 @@ void gatherSorted(Exec& exec, BufT& arr, std::uint32_t b, std::uint32_t e, const
 /// sequences are merged. Keys are unique, so the result is the one sorted order whichever way:
 /// the same permutation as a sort of the whole block, which runs (and exec.lowerBound finds the
 /// active end) when the check fails, when more than 1 / kMergeMoverShare of the block moved, or
-/// when no order is kept (the first sort). *merged (when given) says which way it went.
-/// m.stays[b, e) is read; m.keys_alt and m.perm_alt are scratch.
+/// when no order is kept (the first sort), and for blocks of fewer than `min_merge` particles.
+/// *merged (when given) says which way it went. m.stays[b, e) is read; m.keys_alt and
+/// m.perm_alt are scratch.
 template <class Exec>
 std::uint32_t sortKeys(Exec& exec, const SortMemory& m, std::uint32_t b, std::uint32_t e, std::uint64_t excluded,
-                       bool* merged = nullptr) {
+                       bool* merged = nullptr, std::uint32_t min_merge = kMergeMinParticles) {
     if (merged) *merged = false;
     if (e <= b) return b;
     const std::uint32_t n = e - b;
     std::uint32_t nexcl = 0;
-    const std::uint32_t nstay = exec.stayersFirst(m.keys, m.perm, m.stays, m.keys_alt, m.perm_alt, b, e, excluded, nexcl);
+    const std::uint32_t nstay =
+        n >= min_merge ? exec.stayersFirst(m.keys, m.perm, m.stays, m.keys_alt, m.perm_alt, b, e, excluded, nexcl) : 0;
     if (nstay == 0 || n - nstay > n / kMergeMoverShare) {
         exec.sortPairs(m.keys, m.keys_alt, m.perm, m.perm_alt, b, e);
         return exec.lowerBound(m.keys, b, e, excluded);
@@ -112,16 +130,19 @@ std::uint32_t sortKeys(Exec& exec, const SortMemory& m, std::uint32_t b, std::ui
     return e - nexcl;
 }
 
-/// Sorts [b, e) by (cell, id), excluded last; gathers the fields that follow the sort (kSorted;
-/// kSortedPre when `pre`); rebuilds the cell ranges `cs` for the active part. Returns its end.
+/// Sorts [b, e) by (cell, id), excluded last (sortKeys, merging from `min_merge` particles;
+/// *merged, when given, says whether it did);
+/// gathers the fields that follow the sort (kSorted; kSortedPre when `pre`); rebuilds the cell
+/// ranges `cs` for the active part. Returns its end.
 template <class Exec, class Store, class CellStarts>
 std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, std::uint32_t b, std::uint32_t e,
-                             CellStarts& cs, bool pre) {
+                             CellStarts& cs, bool pre, std::uint32_t min_merge = kMergeMinParticles,
+                             bool* merged = nullptr) {
     const SortMemory m = sortMemoryOf(p);
     std::uint32_t active_end = b;
     if (e > b) {
         exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm, m.stays});
-        active_end = sortKeys(exec, m, b, e, physics::kExcludedCell << 32);
+        active_end = sortKeys(exec, m, b, e, physics::kExcludedCell << 32, merged, min_merge);
         p.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
             if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gatherSorted(exec, buf, b, e, m);
         });

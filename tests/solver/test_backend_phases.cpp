@@ -238,12 +238,18 @@ TYPED_TEST(BackendPhases, SymplecticStepThinSkinSortsSometimes2D) {
     const std::string dir = test::scratch("phases_sym2d_thin");
     const std::string kase = pistonTank(
         dir, R"(<parameter key="StepAlgorithm" value="2" /><parameter key="Kernel" value="2" /><parameter key="ViscoTreatment" value="1" /><parameter key="Visco" value="0.05" /><parameter key="DensityDT" value="1" />)");
+    // Both backends merge their sorts as large blocks do (particle_sort.h): the GPU's
+    // partition, check and merge against the host's loops.
+    setenv("SEASPRING_SORT_MERGE_MIN", "1", 1);
     Pair<TypeParam> p(kase, 0, 0.002);  // a thin skin: some divides sort, some do not
+    unsetenv("SEASPRING_SORT_MERGE_MIN");
     ASSERT_TRUE(p.ok) << p.skip_reason;
     symplecticSteps(p, 150, "2D symplectic thin skin", 2e-4);
     const solver::DivideCounts c = p.ref->divideCounts(), cb = p.b->divideCounts();
     EXPECT_EQ(c.sorts, cb.sorts);
     EXPECT_EQ(c.boundary_sorts, cb.boundary_sorts);
+    EXPECT_EQ(c.merged_sorts, cb.merged_sorts);
+    EXPECT_GT(c.merged_sorts, 1u) << "sorts that merged (the rest sorted their block whole)";
     EXPECT_GT(c.sorts, 1u);
     EXPECT_LT(c.sorts, c.divides);
     // The piston (0.2 m/s, 30 mm in the 150 steps) leaves its grown cells at fewer divides than
@@ -318,11 +324,15 @@ TYPED_TEST(BackendPhases, SymplecticStep3DCellsOfHalfH) {
 TYPED_TEST(BackendPhases, SymplecticStep3DNoSkinSortsAtEveryDivide) {
     const std::string dir = test::scratch("phases_db3d_noskin");
     const std::string kase = test::generateCaseFile(dir, "db3d", test::caseDef("dambreak3d/DamBreak3D_Def.xml"), 0.03);
+    setenv("SEASPRING_SORT_MERGE_MIN", "1", 1);  // merged sorts on both backends (as above)
     Pair<TypeParam> p(kase, 4, 0.0);
+    unsetenv("SEASPRING_SORT_MERGE_MIN");
     ASSERT_TRUE(p.ok) << p.skip_reason;
     symplecticSteps(p, 2, "3D Wendland artificial, no skin");
     const solver::DivideCounts c = p.ref->divideCounts();
     EXPECT_EQ(c.sorts, c.divides);
+    EXPECT_GT(c.merged_sorts, 0u);
+    EXPECT_EQ(c.merged_sorts, p.b->divideCounts().merged_sorts);
 }
 
 /// The hydrostatic plate's coupled steps; `def`: the DBC case or its mDBC sibling (ghost vectors

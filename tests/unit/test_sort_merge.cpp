@@ -4,8 +4,8 @@
 ///        order kept, the movers sorted and merged, gives the one sorted order of the keys and
 ///        the permutation that goes with it, as a sort of the whole block, and the end of the
 ///        active part (excluded keys last) counted on the way; stayer flags that do
-///        not hold (stayers whose keys do not ascend), too many movers and blocks with no
-///        stayer fall back to that sort. The GPU's primitives are checked through the solver:
+///        not hold (stayers whose keys do not ascend), too many movers, blocks with no
+///        stayer and blocks below the merge's size fall back to that sort. The GPU's primitives are checked through the solver:
 ///        the typed BackendPhases tests compare every divide's state with the host's.
 #include <gtest/gtest.h>
 
@@ -69,7 +69,8 @@ struct Block {
     }
 };
 
-void expectSorted(Block& blk, bool expect_merge) {
+/// Sorts the block (every size may merge: min_merge 1, or `min_merge`) and checks the result.
+void expectSorted(Block& blk, bool expect_merge, std::uint32_t min_merge = 1) {
     std::vector<std::uint64_t> k;
     std::vector<std::uint32_t> p;
     blk.expected(k, p);
@@ -78,7 +79,8 @@ void expectSorted(Block& blk, bool expect_merge) {
     const std::uint32_t active_end = blk.b + std::uint32_t(std::lower_bound(k.begin(), k.end(), excluded) - k.begin());
     HostExec exec(2);
     bool merged = !expect_merge;
-    EXPECT_EQ(sortKeys(exec, blk.memory(), blk.b, blk.e, excluded, &merged), active_end) << "the active part's end";
+    EXPECT_EQ(sortKeys(exec, blk.memory(), blk.b, blk.e, excluded, &merged, min_merge), active_end)
+        << "the active part's end";
     EXPECT_EQ(merged, expect_merge);
     for (std::uint32_t i = blk.b; i < blk.e; ++i) {
         ASSERT_EQ(blk.keys[i], k[i - blk.b]) << "key at " << i;
@@ -118,6 +120,15 @@ TEST(SortMerge, ManyMoversOrNoStayersSortTheWholeBlock) {
     Block none(300, 0, 300, 0.0, rng);  // e.g. the first sort: no particle has a cell yet
     std::fill(none.stays.begin(), none.stays.end(), 0);
     expectSorted(none, false);
+}
+
+TEST(SortMerge, SmallBlocksSortWhole) {
+    std::mt19937 rng(14);
+    Block small(1000, 0, 1000, 0.05, rng);
+    expectSorted(small, false, 1001);
+    Block large(1000, 0, 1000, 0.05, rng);
+    expectSorted(large, true, 1000);
+    EXPECT_GT(seaspring::solver::kMergeMinParticles, 20000u) << "the solver's small cases sort whole";
 }
 
 TEST(SortMerge, StayersWhoseKeysDoNotAscendSortTheWholeBlock) {
