@@ -42,6 +42,7 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("divides", static_cast<long long>(s.divides));
     j.value("sorts", static_cast<long long>(s.sorts));
     j.value("boundary_sorts", static_cast<long long>(s.boundary_sorts));
+    j.value("merged_sorts", static_cast<long long>(s.merged_sorts));
     j.value("wall_time_s", s.wall_time);
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);

@@ -36,6 +36,7 @@ struct RunSummary {
     long long dtmin_hits = 0;
     unsigned long long divides = 0, sorts = 0;  ///< divides, and those that sorted (skin)
     unsigned long long boundary_sorts = 0;      ///< sorts that included the boundary block (movers)
+    unsigned long long merged_sorts = 0;        ///< block sorts that merged the movers in (particle_sort.h)
     double physical_time = 0, wall_time = 0, loop_time = 0;
     double ns_per_particle_step = 0;
     double dt_last = 0;

@@ -214,6 +214,7 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     sum_.divides = dc.divides;
     sum_.sorts = dc.sorts;
     sum_.boundary_sorts = dc.boundary_sorts;
+    sum_.merged_sorts = dc.merged_sorts;
     sum_.solid_substeps = counters.solid_substeps;
     sum_.omega_max = counters.omega_max;
     if (setup_.solid.empty()) return;
