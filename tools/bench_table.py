@@ -239,6 +239,8 @@ def elapsed_at(pts, t):
 
 def cmd_sluice_run(a):
     np_, dev, pts = read_progress(a.log)
+    if pts and pts[0][0] > 0.0:
+        pts.insert(0, (0.0, 0, 0.0))  # the loop starts at t = 0 (the run is not a restart)
     row = {"bench": "sluice3d_run", "build": a.build, "round": a.round, "particles": np_ or "",
            "device": a.device or dev, "status": a.status, "note": a.note}
     # The simulated interval of the dp 1 mm window of this round, when it ran.
