@@ -28,9 +28,6 @@ using test::Scratch;
 using test::makeParticles;
 using test::sameBytes;
 
-}  // namespace
-namespace {
-
 /// The particles of makeParticles as a part writer's arrays (ids, MKs and masses borrowed).
 PartArrays arraysOf(const Particles& p, int index, double time) {
     PartArrays a;
