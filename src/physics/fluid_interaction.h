@@ -12,9 +12,10 @@
 /// particle writes its own results.
 ///
 /// Pair lanes (`lanes`, a power of two <= kMaxPairLanes; -pairlanes): a particle's sums are
-/// split into `lanes` partial sums. Candidate number p of a block (counted from 0 in the row
-/// order above, neighbours or not) goes to partial p mod lanes, each partial summed in
-/// candidate order; the partials are then combined pairwise, (s0 + s1) + (s2 + s3) and so on
+/// split into `lanes` partial sums. Candidate j (its index in the particle arrays) goes to
+/// partial j mod lanes, each partial summed in candidate order (so which rows and cells a walk
+/// visits, beyond those that hold neighbours, cannot change a lane's sum: the host's row table
+/// may skip candidates out of reach that the GPU's walk tests); the partials are then combined pairwise, (s0 + s1) + (s2 + s3) and so on
 /// (combineLanes). The GPU runs one thread per lane (fluidLanePartial) and combines with the
 /// same tree across the lanes of a warp; the host forms all partials in one walk
 /// (fluidLanePartials). One lane is the plain sum. More lanes give small cases more threads:
@@ -39,15 +40,15 @@ constexpr bool kLoadAhead = kBound && Opt::visco != Viscosity::Artificial;
 
 /// Candidates [pb, pe) of one row for fluid particle a (b in the fluid block, or kBound), `par`
 /// and `cax` as forEachCandidateRow gives them: the direct loop (the GPU's path).
-/// Pair lanes: `lane` takes the candidates j of the row whose number in the block, `seen` + (j -
-/// pb), is lane mod `lanes` (lanes a power of two; one lane: every candidate).
+/// Pair lanes: `lane` takes the candidates j of the row with j mod `lanes` = lane (lanes a power
+/// of two; one lane: every candidate).
 template <class Opt, bool kBound>
-SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen, std::uint32_t lane,
+SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t lane,
                                          std::uint32_t lanes, const Float4& par, int cax,
                                          const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                                          const InteractionInputs& in, const FluidConstants& c,
                                          const CellGrid& g, FluidAccum& acc) {
-    std::uint32_t j = pb + ((lane - seen) & (lanes - 1u));
+    std::uint32_t j = pb + ((lane - pb) & (lanes - 1u));
     if constexpr (!kLoadAhead<Opt, kBound>) {
         for (; j < pe; j += lanes) {
             float drx, dry, drz;
@@ -82,12 +83,11 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std
 /// candidate k, which in a disordered flow (where the threads' neighbours lie at unrelated
 /// candidate steps) keeps more of them busy (docs/performance-large.md, sixteenth session).
 template <class Opt, bool kBound>
-SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t pe, std::uint32_t seen,
-                                               std::uint32_t lane, std::uint32_t lanes, const Float4& par, int cax,
+SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t pe, std::uint32_t lane, std::uint32_t lanes, const Float4& par, int cax,
                                                const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
                                                const InteractionInputs& in, const FluidConstants& c,
                                                const CellGrid& g, FluidAccum& acc) {
-    for (std::uint32_t base = pb + ((lane - seen) & (lanes - 1u)); base < pe; base += 32u * lanes) {
+    for (std::uint32_t base = pb + ((lane - pb) & (lanes - 1u)); base < pe; base += 32u * lanes) {
         std::uint32_t hits = 0;
         for (std::uint32_t k = 0, j = base; k < 32u && j < pe; ++k, j += lanes) {
             float drx, dry, drz;
@@ -105,8 +105,8 @@ SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t p
 }
 
 /// The pairs of `psa` with the candidates of one block (`cell_start` of that block), row by row
-/// (forEachCandidateRow), candidates numbered from 0 in the block: kCompact (the host), every
-/// lane's partial at once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0].
+/// (forEachCandidateRow, or the host's row table): kCompact (the host), every lane's partial at
+/// once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0].
 template <class Opt, bool kBound, bool kCompact, bool kMask = false>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
@@ -115,18 +115,15 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
                                            std::uint32_t lanes, FluidAccum* acc, const RowTable* rows = nullptr) {
     struct Empty {};
     std::conditional_t<kCompact, PairBatch<Opt, kBound>, Empty> batch;
-    std::uint32_t seen = 0;
     // The block's end (the host's lane loads may read up to it).
     [[maybe_unused]] const std::uint32_t end = kCompact ? cell_start[g.cellCount()] : 0u;
     auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
         if constexpr (kCompact)
-            batch.addRow(pb, pe, end, seen, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
+            batch.addRow(pb, pe, end, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, acc);
         else if constexpr (kMask)
-            fluidPairsInRowMasked<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g,
-                                               *acc);
+            fluidPairsInRowMasked<Opt, kBound>(pb, pe, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
         else
-            fluidPairsInRow<Opt, kBound>(pb, pe, seen, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
-        seen += pe - pb;
+            fluidPairsInRow<Opt, kBound>(pb, pe, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
     };
     if (rows != nullptr && !rows->full)
         rows->forEachCandidateRow(psa, cell_start, row);

@@ -14,25 +14,22 @@
 namespace seaspring::physics {
 
 /// The neighbours of one particle found so far in its candidate rows (candidates that passed
-/// isNeighbour, in candidate order): index, offset, r^2 and, kLanes, pair lane.
-template <bool kLanes>
+/// isNeighbour, in candidate order): index, offset and r^2 (a pair lane is its index mod the
+/// lanes: fluid_interaction.h).
 struct NeighbourBatch {
     static constexpr int kCap = 256;
     // (kPad more: the host's SIMD loop stores eight lanes at the batch's end, SEASPRING_SIMD8.)
     static constexpr int kPad = 8;
     std::uint32_t jj[kCap + kPad];
-    std::uint32_t ln[kLanes ? kCap + kPad : 1];
     float bx[kCap + kPad], by[kCap + kPad], bz[kCap + kPad], br[kCap + kPad];
     int m = 0;
 
-    /// Candidates [pb, pe), the first of them number `seen` of the block, whose particles end at
-    /// `end` (the lane loads may read records [pe, end)): the neighbours among the first
-    /// min(pe - pb, kCap - m) of them are appended (branch-free: every candidate is written at
-    /// m, m advances on a neighbour); returns how many candidates were taken. Pair lanes
-    /// (kLanes): a candidate's lane is its number in the block mod `lanes`.
+    /// Candidates [pb, pe) of a block whose particles end at `end` (the lane loads may read
+    /// records [pe, end)): the neighbours among the first min(pe - pb, kCap - m) of them are
+    /// appended (branch-free: every candidate is written at m, m advances on a neighbour);
+    /// returns how many candidates were taken.
     template <int kDim>
     SEASPRING_HD std::uint32_t fill(std::uint32_t pb, std::uint32_t pe, [[maybe_unused]] std::uint32_t end,
-                                    [[maybe_unused]] std::uint32_t seen, [[maybe_unused]] std::uint32_t lanes,
                                     const Float4& par, int cax, const InteractionInputs& in, const FluidConstants& c,
                                     const CellGrid& g) {
         const int take = pe - pb > std::uint32_t(kCap - m) ? kCap - m : int(pe - pb);
@@ -52,7 +49,6 @@ struct NeighbourBatch {
             const unsigned hits = isNeighbour(r, c).bits() & ((1u << cnt) - 1u);
             // The neighbours packed to the batch's end (w + 8 <= kCap + kPad), branch-free.
             simd::leftPackStoreIota(jj + w, j0, ~0u, hits);
-            if constexpr (kLanes) simd::leftPackStoreIota(ln + w, seen + std::uint32_t(k0), lanes - 1u, hits);
             simd::leftPackStore(bx + w, dx, hits);
             simd::leftPackStore(by + w, dy, hits);
             simd::leftPackStore(bz + w, dz, hits);
@@ -65,7 +61,6 @@ struct NeighbourBatch {
             float drx, dry, drz;
             const float r = pairOffset<kDim>(par, in.poscell[j], cax, g, drx, dry, drz);
             jj[w] = j;
-            if constexpr (kLanes) ln[w] = (seen + std::uint32_t(k)) & (lanes - 1u);
             bx[w] = drx;
             by[w] = dry;
             bz[w] = drz;
@@ -78,10 +73,10 @@ struct NeighbourBatch {
     }
 };
 
-/// A fluid particle's pairs (fluidPairsInBlock, kCompact). Pair lanes: each neighbour carries
-/// its lane, and its terms go to that lane's partial sum, acc[lane].
+/// A fluid particle's pairs (fluidPairsInBlock, kCompact). Pair lanes: a neighbour's terms go to
+/// its lane's partial sum, acc[j mod lanes].
 template <class Opt, bool kBound>
-struct PairBatch : NeighbourBatch<true> {
+struct PairBatch : NeighbourBatch {
     static constexpr bool kLaminar = Opt::visco != Viscosity::Artificial;
     static constexpr bool kSps = Opt::sps;
     // Their terms, one array per field (so that the SIMD lanes store whole vectors).
@@ -147,26 +142,25 @@ struct PairBatch : NeighbourBatch<true> {
             return t;
         };
         // In candidate order. One pair lane: the sums in registers (the same operations).
-        if (lanes == 1u) {  // every ln is 0
+        if (lanes == 1u) {
             FluidAccum a = acc[0];
             for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(a, termsAt(q));
             acc[0] = a;
         } else {
-            for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc[ln[q]], termsAt(q));
+            const std::uint32_t lane_mask = lanes - 1u;
+            for (int q = 0; q < n; ++q) addPairTerms<Opt, kBound>(acc[sj[q] & lane_mask], termsAt(q));
         }
         m = 0;
     }
 
 
     /// Candidates [pb, pe) of one row (NeighbourBatch::fill), flushed whenever the batch is full.
-    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t end, std::uint32_t seen,
-                             std::uint32_t lanes, const Float4& par, int cax, const Float4& va, float ovrhoa,
+    SEASPRING_HD void addRow(std::uint32_t pb, std::uint32_t pe, std::uint32_t end, std::uint32_t lanes,
+                             const Float4& par, int cax, const Float4& va, float ovrhoa,
                              float pressa, const SymTensor& taua, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, FluidAccum* acc) {
         while (pb < pe) {
-            const std::uint32_t take = fill<Opt::dim>(pb, pe, end, seen, lanes, par, cax, in, c, g);
-            pb += take;
-            seen += take;
+            pb += fill<Opt::dim>(pb, pe, end, par, cax, in, c, g);
             if (m == kCap) flush(lanes, va, ovrhoa, pressa, taua, in, c, acc);
         }
     }
@@ -175,7 +169,7 @@ struct PairBatch : NeighbourBatch<true> {
 /// A DBC boundary particle's pairs with its fluid neighbours (boundParticleForces, kCompact):
 /// continuity and the viscous dt measure.
 template <class Opt>
-struct BoundBatch : NeighbourBatch<false> {
+struct BoundBatch : NeighbourBatch {
     float tv[kCap], tw[kCap], tvisc[kCap];
 
     /// The batch's pairs: their terms in SIMD lanes, then added to (ar, visc) in candidate order.
@@ -199,7 +193,7 @@ struct BoundBatch : NeighbourBatch<false> {
                              const Float4& va, const InteractionInputs& in, const FluidConstants& c,
                              const CellGrid& g, float& ar, float& visc) {
         while (pb < pe) {
-            pb += fill<Opt::dim>(pb, pe, end, 0u, 1u, par, cax, in, c, g);
+            pb += fill<Opt::dim>(pb, pe, end, par, cax, in, c, g);
             if (m == kCap) flush(va, in, c, ar, visc);
         }
     }

@@ -19,9 +19,10 @@ namespace seaspring::solver {
 
 // ---- divide: sort by (cell, id), cell ranges, "near" flags, PosCell ----------------------
 
-/// Particle i's sort key, perm[i] = i, and stays[i]: 1 when its key's cell is the cell its PosCell
-/// was assigned at the last sort (so the block's order, sorted by those cells and ids, holds
-/// for it), else 0 (particle_sort.h's merge takes the stayers as sorted after checking it).
+/// Particle i's sort key, perm[i] = i, and, when `stays` is given (a block the merge may take),
+/// stays[i]: 1 when its key's cell is the cell its PosCell was assigned at the last sort (so the
+/// block's order, sorted by those cells and ids, holds for it), else 0 (particle_sort.h's merge
+/// takes the stayers as sorted after checking it).
 struct SortKeyPass {
     physics::ParticleView v;
     physics::CellGrid g;
@@ -32,7 +33,7 @@ struct SortKeyPass {
         const std::uint64_t k = physics::sortKeyAt(i, v, g);
         keys[i] = k;
         perm[i] = i;
-        stays[i] = std::uint32_t(k >> 32) == physics::linearCellOf(g, v.poscell[i].w) ? 1u : 0u;
+        if (stays != nullptr) stays[i] = std::uint32_t(k >> 32) == physics::linearCellOf(g, v.poscell[i].w) ? 1u : 0u;
     }
 };
 

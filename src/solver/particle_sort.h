@@ -141,7 +141,9 @@ std::uint32_t sortBlockRange(Exec& exec, Store& p, const physics::CellGrid& g, s
     const SortMemory m = sortMemoryOf(p);
     std::uint32_t active_end = b;
     if (e > b) {
-        exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm, m.stays});
+        // The stayer flags only where sortKeys may merge (small blocks sort whole).
+        exec.template forEach<LaunchDefault>(b, e, SortKeyPass{p.view(), g, m.keys, m.perm,
+                                                               e - b >= min_merge ? m.stays : nullptr});
         active_end = sortKeys(exec, m, b, e, physics::kExcludedCell << 32, merged, min_merge);
         p.forEachField([&](auto& buf, unsigned flags, physics::FieldNeed) {
             if ((flags & physics::kSorted) || (pre && (flags & physics::kSortedPre))) gatherSorted(exec, buf, b, e, m);
