@@ -104,6 +104,8 @@ inline Quad8 loadQuads(const float* p) {
     return transposeQuads(a0, a1, a2, a3);
 }
 inline void store(float* p, Vec8f x) { _mm256_storeu_ps(p, x.v); }
+/// Eight floats p[0..7] (unaligned).
+inline Vec8f load(const float* p) { return _mm256_loadu_ps(p); }
 
 /// For each 8-bit lane mask, the lanes it holds in ascending order (then zeros): the permutation
 /// that packs the selected lanes to the front.

@@ -154,7 +154,7 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     std::conditional_t<kCompact, RowTable, NoRows> rows;  // the host: the rows once, for both blocks
     const RowTable* rt = nullptr;
     if constexpr (kCompact) {
-        rows.template build<Opt::dim>(psa, c, g);
+        rows.template build<Opt::dim>(psa, c, g, in.row_ext);
         rt = &rows;
     } else {
         (void)rows;
@@ -258,8 +258,8 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
         auto row = [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
             batch.addRow(pb, pe, end, par, cax, va, in, c, g, ar, visc);
         };
-        RowTable rows;  // the rows in SIMD lanes (the same rows)
-        rows.template build<Opt::dim>(psa, c, g);
+        RowTable rows;  // the rows in SIMD lanes (the same rows, or those the extents leave)
+        rows.template build<Opt::dim>(psa, c, g, in.row_ext);
         if (!rows.full)
             rows.forEachCandidateRow(psa, in.cell_start_fluid, row);
         else

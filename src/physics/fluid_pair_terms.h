@@ -33,6 +33,9 @@ struct InteractionInputs {
     /// mDBC SlipMode 2/3 (null otherwise): per boundary particle, the velocity its viscous
     /// terms use (the tangential ghost velocity, mdbc.h); its velrho keeps the wall's.
     const Float4* bound_visc_vel = nullptr;
+    /// The host's row extents of this evaluation (row_extents.h; none on the GPU, whose walk
+    /// tests the rows' cells): its row table (RowTable) tests rows against them.
+    RowExtents row_ext;
 };
 
 /// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.

@@ -15,6 +15,7 @@
 #include "core/simd8.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
+#include "physics/row_extents.h"
 #include "physics/sph_types.h"
 
 namespace seaspring::physics {
@@ -176,7 +177,9 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
 /// (the host's path): row k has linear cells [c0[k], c1[k]) and the row frame (x, py[k], pz[k]).
 /// With SEASPRING_SIMD8 (the host's AVX2 build) eight rows along y are tested at once: rowCells'
 /// cellGap and rowSpan and the row frame's y evaluated on lanes (the same operations, so the
-/// same rows and bits), the rows in reach packed in order.
+/// same rows and bits), the rows in reach packed in order. With row extents (`ext`, row_extents.h)
+/// each row is tested against its particles' extents instead of its cells (rowSpanInExtent):
+/// a subset of those rows and cells, holding every neighbour, in the same order.
 struct RowTable {
     static constexpr int kCap = 256;  ///< rows at most; a larger search box: `full` (not built)
     static constexpr int kPad = 8;    ///< room for the lanes' stores at the table's end
@@ -187,11 +190,14 @@ struct RowTable {
     float py[kCap + kPad], pz[kCap + kPad];
 
     template <int kDim>
-    SEASPRING_HD void build(const Float4& psa, const FluidConstants& c, const CellGrid& g) {
+    SEASPRING_HD void build(const Float4& psa, const FluidConstants& c, const CellGrid& g,
+                            const RowExtents& ext = RowExtents{}) {
         const SearchBox box = searchBox<kDim>(psa, g);
         n = 0;
         full = (box.z1 - box.z0 + 1) * (box.y1 - box.y0 + 1) > kCap;
         if (full) return;
+        const bool with_ext = ext.lo[0] != nullptr;
+        const float ext_margin = kRowSpanMargin * g.cellsizef;  // the extents hold the skin
 #if SEASPRING_SIMD8
         cax = box.cax;
         forEachZInReach<kDim>(box, psa, c, g, [&](int z, float rowdz, float gz, int ylo, int yhi) {
@@ -199,30 +205,53 @@ struct RowTable {
             const float rowz = psa.z + rowdz;  // rowFrame's z
             for (int y0 = ylo; y0 <= yhi; y0 += 8) {
                 const simd::Vec8i y = simd::iota(y0);
-                simd::Vec8f gy(0.f);
-                if constexpr (kDim == 3)
-                    gy = cellGap(y - simd::Vec8i(box.cay), simd::Vec8f(psa.y), g.cellsizef, box.margin);
+                const simd::Vec8f rowdy = simd::Vec8f(g.cellsizef) * toFloat(simd::Vec8i(box.cay) - y);
+                const simd::Vec8f rowy = simd::Vec8f(psa.y) + rowdy;  // rowFrame's y
                 simd::Vec8i x0, x1;
-                const simd::Mask8 in = rowSpan(g, box.cax, simd::Vec8f(psa.x), gy * gy + simd::Vec8f(gz2),
-                                               c.ker.kernelsize2, box.margin, x0, x1);
+                simd::Mask8 in;
+                if (with_ext) {
+                    const std::uint32_t r = std::uint32_t(y0) + std::uint32_t(g.ncy) * std::uint32_t(z);
+                    const simd::Vec8f lo[3] = {simd::load(ext.lo[0] + r), simd::load(ext.lo[1] + r),
+                                               simd::load(ext.lo[2] + r)};
+                    const simd::Vec8f hi[3] = {simd::load(ext.hi[0] + r), simd::load(ext.hi[1] + r),
+                                               simd::load(ext.hi[2] + r)};
+                    in = rowSpanInExtent<kDim>(g, box.cax, simd::Vec8f(psa.x), rowy, simd::Vec8f(rowz), lo, hi,
+                                               c.ker.kernelsize2, ext_margin, x0, x1);
+                } else {
+                    simd::Vec8f gy(0.f);
+                    if constexpr (kDim == 3)
+                        gy = cellGap(y - simd::Vec8i(box.cay), simd::Vec8f(psa.y), g.cellsizef, box.margin);
+                    in = rowSpan(g, box.cax, simd::Vec8f(psa.x), gy * gy + simd::Vec8f(gz2), c.ker.kernelsize2,
+                                 box.margin, x0, x1);
+                }
                 const unsigned bits = (in && y <= simd::Vec8i(yhi)).bits();
                 // g.linear(0, y, z) (the unsigned product's low bits, as the scalar's)
                 const simd::Vec8i row = simd::Vec8i(g.ncx) * (y + simd::Vec8i(g.ncy) * simd::Vec8i(z));
                 simd::leftPackStore(c0 + n, row + x0, bits);
                 simd::leftPackStore(c1 + n, row + x1 + simd::Vec8i(1), bits);
-                const simd::Vec8f rowdy = simd::Vec8f(g.cellsizef) * toFloat(simd::Vec8i(box.cay) - y);
-                simd::leftPackStore(py + n, simd::Vec8f(psa.y) + rowdy, bits);  // rowFrame's y
+                simd::leftPackStore(py + n, rowy, bits);
                 simd::leftPackStore(pz + n, simd::Vec8f(rowz), bits);
                 n += __builtin_popcount(bits);
             }
         });
 #else
         forEachRowInReach<kDim>(psa, c, g, [&](std::uint32_t r0, std::uint32_t r1, const Float4& par, int x) {
+            cax = x;
+            if (with_ext) {  // the row's cells narrowed to its extents (or the row dropped)
+                const std::uint32_t row = r0 / std::uint32_t(g.ncx), first = row * std::uint32_t(g.ncx);
+                const float lo[3] = {ext.lo[0][row], ext.lo[1][row], ext.lo[2][row]};
+                const float hi[3] = {ext.hi[0][row], ext.hi[1][row], ext.hi[2][row]};
+                int x0, x1;
+                if (!rowSpanInExtent<kDim>(g, x, psa.x, par.y, par.z, lo, hi, c.ker.kernelsize2, ext_margin, x0, x1))
+                    return;
+                r0 = r0 > first + std::uint32_t(x0) ? r0 : first + std::uint32_t(x0);
+                r1 = r1 < first + std::uint32_t(x1) + 1u ? r1 : first + std::uint32_t(x1) + 1u;
+                if (r0 >= r1) return;
+            }
             c0[n] = r0;
             c1[n] = r1;
             py[n] = par.y;
             pz[n] = par.z;
-            cax = x;
             ++n;
         });
 #endif

@@ -13,6 +13,7 @@
 #include "physics/fluid_pair_terms.h"
 #include "physics/gauges.h"
 #include "physics/particle_updates.h"
+#include "physics/row_extents.h"
 #include "physics/time_integration.h"
 
 namespace seaspring::solver {
@@ -80,6 +81,16 @@ struct CellStartOuterPass {
     const std::uint64_t* keys;
     std::uint32_t* cell_start;
     SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellStartOuterAt(c, b, e, keys, cell_start); }
+};
+
+/// Row r's extents (physics::rowExtentAt): the host's row table reads them (kCompactPairs).
+struct RowExtentsPass {
+    physics::CellGrid g;
+    const std::uint32_t* cs_fluid;
+    const std::uint32_t* cs_bound;
+    const physics::Float4* poscell;
+    float* data;
+    SEASPRING_HD void operator()(std::uint32_t r) const { physics::rowExtentAt(r, g, cs_fluid, cs_bound, poscell, data); }
 };
 
 struct CellStartFillPass {
