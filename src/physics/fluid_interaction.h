@@ -127,6 +127,8 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
     };
     if (rows != nullptr && !rows->full)
         rows->forEachCandidateRow(psa, cell_start, row);
+    else if (kBound && !kCompact && in.bound_ext.lo[0] != nullptr)
+        forEachCandidateRowInExtents<Opt::dim>(psa, cell_start, in.bound_ext, c, g, row);
     else
         forEachCandidateRow<Opt::dim>(psa, cell_start, c, g, row);
     if constexpr (kCompact) batch.flush(lanes, va, ovrhoa, pressa, taua, in, c, acc);

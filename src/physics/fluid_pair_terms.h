@@ -36,6 +36,9 @@ struct InteractionInputs {
     /// The host's row extents of this evaluation (row_extents.h; none on the GPU, whose walk
     /// tests the rows' cells): its row table (RowTable) tests rows against them.
     RowExtents row_ext;
+    /// The GPU's extents of the boundary block's rows (its walls keep their lattice): its walk of
+    /// that block tests rows against them (forEachCandidateRowInExtents); none on the host.
+    RowExtents bound_ext;
 };
 
 /// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.

@@ -173,6 +173,35 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
     });
 }
 
+/// forEachCandidateRow for a block whose rows' extents are `ext` (row_extents.h): the rows of
+/// forEachZInReach tested against their particles' extents (rowSpanInExtent) instead of their
+/// cells. Every row and cell that can hold a neighbour, in the same order (a subset of the rows,
+/// so the same neighbours in the same order; pair lanes by index keep every lane's sum). The
+/// GPU's walk of the boundary block, whose walls keep their lattice.
+template <int kDim, class RowFn>
+SEASPRING_HD_INLINE void forEachCandidateRowInExtents(const Float4& psa, const std::uint32_t* cell_start,
+                                                      const RowExtents& ext, const FluidConstants& c,
+                                                      const CellGrid& g, RowFn fn) {
+    const SearchBox box = searchBox<kDim>(psa, g);
+    const float margin = kRowSpanMargin * g.cellsizef;  // the extents hold the skin
+    forEachZInReach<kDim>(box, psa, c, g, [&](int z, float rowdz, float, int ylo, int yhi) {
+        for (int y = ylo; y <= yhi; ++y) {
+            const std::uint32_t r = std::uint32_t(y) + std::uint32_t(g.ncy) * std::uint32_t(z);
+            const float lo[3] = {ext.lo[0][r], kDim == 3 ? ext.lo[1][r] : 0.f, ext.lo[2][r]};
+            const float hi[3] = {ext.hi[0][r], kDim == 3 ? ext.hi[1][r] : 0.f, ext.hi[2][r]};
+            const float rowdy = g.cellsizef * float(box.cay - y);
+            Float4 par = rowFrame(psa, rowdy, rowdz);
+            int x0, x1;
+            if (!rowSpanInExtent<kDim>(g, box.cax, psa.x, par.y, par.z, lo, hi, c.ker.kernelsize2, margin, x0, x1))
+                continue;
+            SEASPRING_MATERIALIZE(par.y);  // once per row, not per candidate
+            SEASPRING_MATERIALIZE(par.z);
+            const std::uint32_t row = r * std::uint32_t(g.ncx);
+            fn(cell_start[row + std::uint32_t(x0)], cell_start[row + std::uint32_t(x1) + 1u], par, box.cax);
+        }
+    });
+}
+
 /// The rows in reach of one particle (forEachRowInReach), kept for all the blocks it visits
 /// (the host's path): row k has linear cells [c0[k], c1[k]) and the row frame (x, py[k], pz[k]).
 /// With SEASPRING_SIMD8 (the host's AVX2 build) eight rows along y are tested at once: rowCells'

@@ -47,16 +47,17 @@ SEASPRING_HD inline RowExtents rowExtentsIn(const float* data, const CellGrid& g
     return e;
 }
 
-/// Row r's extents over the particles of both blocks (cell starts `cs_fluid`, `cs_bound`) into
-/// `data` (rowExtentStride(g) floats per array, arrays as rowExtentsIn). Minima and maxima are
-/// exact in any order; a NaN offset (a particle no pair test accepts) is left out.
-SEASPRING_HD inline void rowExtentAt(std::uint32_t r, const CellGrid& g, const std::uint32_t* cs_fluid,
-                                     const std::uint32_t* cs_bound, const Float4* poscell, float* data) {
+/// Row r's extents over the particles of one block (cell starts `cs_a`) or two (and `cs_b`, when
+/// not null) into `data` (rowExtentStride(g) floats per array, arrays as rowExtentsIn). Minima
+/// and maxima are exact in any order; a NaN offset (a particle no pair test accepts) is left out.
+SEASPRING_HD inline void rowExtentAt(std::uint32_t r, const CellGrid& g, const std::uint32_t* cs_a,
+                                     const std::uint32_t* cs_b, const Float4* poscell, float* data) {
     float lo[3] = {kEmptyRowExtent, kEmptyRowExtent, kEmptyRowExtent};
     float hi[3] = {-kEmptyRowExtent, -kEmptyRowExtent, -kEmptyRowExtent};
     const std::uint32_t c0 = r * std::uint32_t(g.ncx), c1 = c0 + std::uint32_t(g.ncx);
-    const std::uint32_t* blocks[2] = {cs_fluid, cs_bound};
+    const std::uint32_t* blocks[2] = {cs_a, cs_b};
     for (const std::uint32_t* cs : blocks) {
+        if (cs == nullptr) continue;
         for (std::uint32_t j = cs[c0]; j < cs[c1]; ++j) {
             const Float4 p = poscell[j];
             const float o[3] = {p.x, p.y, p.z};

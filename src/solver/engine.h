@@ -28,6 +28,7 @@
 #include "solver/launch.h"
 #include "solver/particle_passes.h"
 #include "solver/particle_sort.h"
+#include "solver/row_extents_cache.h"
 #include "solver/particle_store.h"
 #include "solver/solid_arrays.h"
 #include "solver/solid_cycle.h"
@@ -337,7 +338,9 @@ private:
             a.hydro_out = solid_.fluid_force.data();
         }
         const physics::FluidConstants& c = setup_.fluid;
-        if constexpr (Exec::kCompactPairs) a.in.row_ext = rowExtents();  // the host's row tables
+        const physics::RowExtents ext = row_ext_.update(exec_, setup_.grid, cs_fluid_.data(), cs_bound_.data(),
+                                                        p_.poscell.data(), setup_.nmoving > 0 || solid_.n > 0);
+        (Exec::kCompactPairs ? a.in.row_ext : a.in.bound_ext) = ext;  // the host's row tables; the GPU's boundary walk
         pressures(a);
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
@@ -442,14 +445,6 @@ private:
         counts_.merged_sorts += merged ? 1u : 0u;
         return end;
     }
-    /// The rows' extents now (physics/row_extents.h), for the host's row tables.
-    physics::RowExtents rowExtents() {
-        const physics::CellGrid& g = setup_.grid;
-        row_ext_.resize(6 * std::size_t(physics::rowExtentStride(g)));
-        exec_.template forEach<LaunchDefault>(0u, std::uint32_t(g.ncy) * std::uint32_t(g.ncz),
-            RowExtentsPass{g, cs_fluid_.data(), cs_bound_.data(), p_.poscell.data(), row_ext_.data()});
-        return physics::rowExtentsIn(row_ext_.data(), g);
-    }
     void nearFlags(const Buf<std::uint32_t>& cs, std::uint8_t bit) {
         nearFlagsOfBlock(exec_, setup_.grid, cs, bit, near_, near_tmp_);
     }
@@ -487,7 +482,7 @@ private:
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint32_t> cs_bound_, cs_fluid_;
     Buf<std::uint8_t> near_, near_tmp_;  ///< per-cell near flags (physics::kNearBound, kNearFluid), scratch
-    Buf<float> row_ext_;                 ///< the host's row extents (rowExtents; empty on the GPU)
+    RowExtentsCache<Exec> row_ext_;      ///< the rows' extents (solver/row_extents_cache.h)
     std::vector<std::uint32_t> ids_host_;  ///< downloadIdOrder: the ids in sorted order
     std::vector<unsigned char> stage_;     ///< downloadIdOrder: one field in sorted order
     Buf<physics::Double3> moving_pos0_;

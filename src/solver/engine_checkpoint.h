@@ -44,6 +44,7 @@ template <class Exec>
 void Engine<Exec>::loadState(const CheckpointData& in) {
     dropForcesAhead();
     solid_end_checked_ = false;
+    row_ext_.bound_done = false;  // the boundary block's positions and cells are the file's
     auto expect = [&](const char* name, long long want) {
         const long long got = in.integer(std::string("engine/") + name);
         if (got != want)

@@ -83,14 +83,14 @@ struct CellStartOuterPass {
     SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellStartOuterAt(c, b, e, keys, cell_start); }
 };
 
-/// Row r's extents (physics::rowExtentAt): the host's row table reads them (kCompactPairs).
+/// Row r's extents (physics::rowExtentAt) over the block of `cs_a` and, when not null, of `cs_b`.
 struct RowExtentsPass {
     physics::CellGrid g;
-    const std::uint32_t* cs_fluid;
-    const std::uint32_t* cs_bound;
+    const std::uint32_t* cs_a;
+    const std::uint32_t* cs_b;
     const physics::Float4* poscell;
     float* data;
-    SEASPRING_HD void operator()(std::uint32_t r) const { physics::rowExtentAt(r, g, cs_fluid, cs_bound, poscell, data); }
+    SEASPRING_HD void operator()(std::uint32_t r) const { physics::rowExtentAt(r, g, cs_a, cs_b, poscell, data); }
 };
 
 struct CellStartFillPass {
