@@ -26,6 +26,7 @@
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/fluid_interaction.h"
+#include "pair_blocks.h"
 
 using namespace seaspring::physics;
 
@@ -56,46 +57,24 @@ struct Scene {
 
 Scene makeScene(int dim, int cell_div, std::mt19937& rng, std::uint32_t density = 1) {
     Scene s;
-    const double dp = 0.01, h = 1.5 * dp, rho0 = 1000;
+    const double dp = 0.01, h = 1.5 * dp;
     const double lx = 0.3, ly = dim == 3 ? 0.12 : 0.0, lz = 0.2;
     EXPECT_TRUE(makeCellGrid(-0.03, dim == 3 ? -0.03 : 0.0, -0.03, lx + 0.03, dim == 3 ? ly + 0.03 : 0.0, lz + 0.03, h,
                              cell_div, s.g, 0.05));
-    FluidInputs fi;
-    fi.h = h;
-    fi.dp = dp;
-    fi.dim = dim;
-    fi.cs0 = 20;
-    fi.b = 20.0 * 20.0 * rho0 / 7.0;
-    fi.rhop0 = rho0;
-    fi.massfluid = fi.massbound = rho0 * (dim == 3 ? dp * dp * dp : dp * dp);
-    fi.visco = 0.05;  // artificial alpha, or laminar nu (scaled below for the laminar families)
-    fi.visco_bound_factor = 0.7;
-    fi.ddt_value = 0.1;
-    fi.gravity_z = -9.81;
-    s.c = makeFluidConstants(fi);
+    s.c = seaspring::test::pairTestFluid(dim, dp, h);  // artificial alpha, or laminar nu (scaled below)
     s.nf = (dim == 3 ? 2500 : 700) * density;
     s.nb = (dim == 3 ? 900 : 120) * density;
     std::uniform_real_distribution<double> ux(0, lx), uy(0, ly), uz(0, lz), ub(-0.02, 0.0), uv(-0.5, 0.5),
         urho(990, 1015), ut(-1e-4, 1e-4);
     auto block = [&](std::uint32_t n, bool bound, std::uint32_t first, std::vector<std::uint32_t>& cs) {
         std::vector<Float4> pc(n), vr(n);
-        std::vector<std::uint32_t> cell(n), order(n);
+        std::vector<std::uint32_t> cell(n);
         for (std::uint32_t k = 0; k < n; ++k) {
             const Double3 p{ux(rng), dim == 3 ? uy(rng) : 0.0, bound ? ub(rng) : uz(rng)};
             pc[k] = makePosCell(s.g, p, cell[k]);
             vr[k] = Float4{float(uv(rng)), dim == 3 ? float(uv(rng)) : 0.f, float(uv(rng)), float(urho(rng))};
         }
-        std::iota(order.begin(), order.end(), 0u);
-        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return cell[a] < cell[b]; });
-        const std::uint32_t nc = s.g.cellCount();
-        cs.assign(nc + 1, 0);
-        for (std::uint32_t k = 0; k < n; ++k) {
-            s.poscell[first + k] = pc[order[k]];
-            s.velrho[first + k] = vr[order[k]];
-            ++cs[cell[order[k]] + 1];
-        }
-        for (std::uint32_t k = 0; k < nc; ++k) cs[k + 1] += cs[k];
-        for (std::uint32_t k = 0; k <= nc; ++k) cs[k] += first;  // absolute indices, as the engine's
+        seaspring::test::placeSortedBlock(s.g, pc, cell, vr, first, s.poscell, s.velrho, cs);
     };
     const std::uint32_t np = s.nb + s.nf;
     s.poscell.resize(np);

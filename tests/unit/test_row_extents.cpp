@@ -25,6 +25,7 @@
 #include "physics/fluid_constants.h"
 #include "physics/fluid_interaction.h"
 #include "physics/row_extents.h"
+#include "pair_blocks.h"
 
 using namespace seaspring::physics;
 
@@ -60,23 +61,11 @@ struct Layout {
 
 Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
     Layout s;
-    const double dp = 0.01, h = 2.0 * dp, rho0 = 1000, skin = 0.05;
+    const double dp = 0.01, h = 2.0 * dp, skin = 0.05;
     const double lx = 0.24, ly = dim == 3 ? 0.10 : 0.0, lz = 0.16;
     EXPECT_TRUE(makeCellGrid(-0.0337, dim == 3 ? -0.0313 : 0.0, -0.0371, lx + 0.03, dim == 3 ? ly + 0.03 : 0.0,
                              lz + 0.03, h, 3, s.g, skin));
-    FluidInputs fi;
-    fi.h = h;
-    fi.dp = dp;
-    fi.dim = dim;
-    fi.cs0 = 20;
-    fi.b = 20.0 * 20.0 * rho0 / 7.0;
-    fi.rhop0 = rho0;
-    fi.massfluid = fi.massbound = rho0 * (dim == 3 ? dp * dp * dp : dp * dp);
-    fi.visco = 0.05;
-    fi.visco_bound_factor = 0.7;
-    fi.ddt_value = 0.1;
-    fi.gravity_z = -9.81;
-    s.c = makeFluidConstants(fi);
+    s.c = seaspring::test::pairTestFluid(dim, dp, h);
     std::uniform_real_distribution<double> u01(0, 1), uv(-0.5, 0.5), urho(990, 1015);
     std::uniform_real_distribution<float> drift(-0.9f * float(skin * s.g.cellsize), 0.9f * float(skin * s.g.cellsize));
     auto positions = [&](bool bound) {
@@ -95,25 +84,16 @@ Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
     };
     auto block = [&](const std::vector<Double3>& pos, std::uint32_t first, std::vector<std::uint32_t>& cs) {
         const std::uint32_t n = std::uint32_t(pos.size());
-        std::vector<Float4> pc(n);
-        std::vector<std::uint32_t> cell(n), order(n);
+        std::vector<Float4> pc(n), vr(n);
+        std::vector<std::uint32_t> cell(n);
         for (std::uint32_t k = 0; k < n; ++k) {
             pc[k] = makePosCell(s.g, pos[k], cell[k]);
             pc[k].x += drift(rng);  // moved since the sort, within the skin (its cell kept)
             if (dim == 3) pc[k].y += drift(rng);
             pc[k].z += drift(rng);
+            vr[k] = Float4{float(uv(rng)), dim == 3 ? float(uv(rng)) : 0.f, float(uv(rng)), float(urho(rng))};
         }
-        std::iota(order.begin(), order.end(), 0u);
-        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return cell[a] < cell[b]; });
-        const std::uint32_t nc = s.g.cellCount();
-        cs.assign(nc + 1, 0);
-        for (std::uint32_t k = 0; k < n; ++k) {
-            s.poscell[first + k] = pc[order[k]];
-            s.velrho[first + k] = Float4{float(uv(rng)), dim == 3 ? float(uv(rng)) : 0.f, float(uv(rng)), float(urho(rng))};
-            ++cs[cell[order[k]] + 1];
-        }
-        for (std::uint32_t k = 0; k < nc; ++k) cs[k + 1] += cs[k];
-        for (std::uint32_t k = 0; k <= nc; ++k) cs[k] += first;
+        seaspring::test::placeSortedBlock(s.g, pc, cell, vr, first, s.poscell, s.velrho, cs);
     };
     const std::vector<Double3> bp = positions(true), fp = positions(false);
     s.nb = std::uint32_t(bp.size());
