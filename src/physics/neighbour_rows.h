@@ -175,9 +175,10 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
 
 /// forEachCandidateRow for a block whose rows' extents are `ext` (row_extents.h): the rows of
 /// forEachZInReach tested against their particles' extents (rowSpanInExtent) instead of their
-/// cells. Every row and cell that can hold a neighbour, in the same order (a subset of the rows,
-/// so the same neighbours in the same order; pair lanes by index keep every lane's sum). The
-/// GPU's walk of the boundary block, whose walls keep their lattice.
+/// cells. Every row and cell that can hold a neighbour, in the same order (in practice fewer
+/// rows and cells than the cell walk's), so the same neighbours in the same order; pair lanes by
+/// index keep every lane's sum. The GPU's walk of the boundary block, whose walls keep their
+/// lattice.
 template <int kDim, class RowFn>
 SEASPRING_HD_INLINE void forEachCandidateRowInExtents(const Float4& psa, const std::uint32_t* cell_start,
                                                       const RowExtents& ext, const FluidConstants& c,
@@ -208,7 +209,8 @@ SEASPRING_HD_INLINE void forEachCandidateRowInExtents(const Float4& psa, const s
 /// cellGap and rowSpan and the row frame's y evaluated on lanes (the same operations, so the
 /// same rows and bits), the rows in reach packed in order. With row extents (`ext`, row_extents.h)
 /// each row is tested against its particles' extents instead of its cells (rowSpanInExtent):
-/// a subset of those rows and cells, holding every neighbour, in the same order.
+/// every row and cell that can hold a neighbour (in practice fewer than the cells give), in the
+/// same order.
 struct RowTable {
     static constexpr int kCap = 256;  ///< rows at most; a larger search box: `full` (not built)
     static constexpr int kPad = 8;    ///< room for the lanes' stores at the table's end
