@@ -14,12 +14,13 @@
 /// Pair lanes (`lanes`, a power of two <= kMaxPairLanes; -pairlanes): a particle's sums are
 /// split into `lanes` partial sums. Candidate j (its index in the particle arrays) goes to
 /// partial j mod lanes, each partial summed in candidate order (so which rows and cells a walk
-/// visits, beyond those that hold neighbours, cannot change a lane's sum: the host's row table
-/// may skip candidates out of reach that the GPU's walk tests); the partials are then combined pairwise, (s0 + s1) + (s2 + s3) and so on
-/// (combineLanes). The GPU runs one thread per lane (fluidLanePartial) and combines with the
-/// same tree across the lanes of a warp; the host forms all partials in one walk
-/// (fluidLanePartials). One lane is the plain sum. More lanes give small cases more threads:
-/// the summation order changes with `lanes`, so hashes compare runs of the same lanes.
+/// visits, beyond those that hold neighbours, cannot change a lane's sum: a walk may skip
+/// candidates out of reach that another tests, row_extents.h); the partials are then combined
+/// pairwise, (s0 + s1) + (s2 + s3) and so on (combineLanes). The GPU runs one thread per lane
+/// (fluidLanePartial) and combines with the same tree across the lanes of a warp; the host
+/// forms all partials in one walk (fluidLanePartials). One lane is the plain sum. More lanes
+/// give small cases more threads: the summation order changes with `lanes`, so hashes compare
+/// runs of the same lanes.
 #pragma once
 
 #include <cstdint>
@@ -83,8 +84,9 @@ SEASPRING_HD inline void fluidPairsInRow(std::uint32_t pb, std::uint32_t pe, std
 /// candidate k, which in a disordered flow (where the threads' neighbours lie at unrelated
 /// candidate steps) keeps more of them busy (docs/performance-large.md, sixteenth session).
 template <class Opt, bool kBound>
-SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t pe, std::uint32_t lane, std::uint32_t lanes, const Float4& par, int cax,
-                                               const Float4& va, float ovrhoa, float pressa, const SymTensor& taua,
+SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t pe, std::uint32_t lane,
+                                               std::uint32_t lanes, const Float4& par, int cax, const Float4& va,
+                                               float ovrhoa, float pressa, const SymTensor& taua,
                                                const InteractionInputs& in, const FluidConstants& c,
                                                const CellGrid& g, FluidAccum& acc) {
     for (std::uint32_t base = pb + ((lane - pb) & (lanes - 1u)); base < pe; base += 32u * lanes) {

@@ -90,7 +90,9 @@ struct RowExtentsPass {
     const std::uint32_t* cs_b;
     const physics::Float4* poscell;
     float* data;
-    SEASPRING_HD void operator()(std::uint32_t r) const { physics::rowExtentAt(r, g, cs_a, cs_b, poscell, data); }
+    SEASPRING_HD void operator()(std::uint32_t r) const {
+        physics::rowExtentAt(r, g, cs_a, cs_b, poscell, data);
+    }
 };
 
 struct CellStartFillPass {

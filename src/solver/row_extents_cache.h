@@ -28,9 +28,10 @@ struct RowExtentsCache {
         if (!kHost && movers) return physics::RowExtents{};
         if (kHost || !bound_done) {
             data.resize(6 * std::size_t(physics::rowExtentStride(g)));
+            const std::uint32_t* first = kHost ? cs_fluid : cs_bound;  // the host: both blocks
+            const std::uint32_t* second = kHost ? cs_bound : nullptr;
             exec.template forEach<LaunchDefault>(0u, std::uint32_t(g.ncy) * std::uint32_t(g.ncz),
-                                                 RowExtentsPass{g, kHost ? cs_fluid : cs_bound, kHost ? cs_bound : nullptr,
-                                                                poscell, data.data()});
+                                                 RowExtentsPass{g, first, second, poscell, data.data()});
             bound_done = true;
         }
         return physics::rowExtentsIn(data.data(), g);

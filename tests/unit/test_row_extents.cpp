@@ -152,11 +152,13 @@ double checkWalks(const Layout& s, double& bound_share) {
             std::size_t brute = 0;
             for (std::uint32_t j = cs[0]; j < cs[s.g.cellCount()]; ++j) {
                 const Float4& a = s.poscell[i];
-                const int dyc = kDim == 3 ? packedCellY(s.g, a.w) - packedCellY(s.g, s.poscell[j].w) : 0;
-                const Float4 par = rowFrame(a, s.g.cellsizef * float(dyc),
-                                            s.g.cellsizef * float(packedCellZ(s.g, a.w) - packedCellZ(s.g, s.poscell[j].w)));
+                const Float4& b = s.poscell[j];
+                const int dyc = kDim == 3 ? packedCellY(s.g, a.w) - packedCellY(s.g, b.w) : 0;
+                const int dzc = packedCellZ(s.g, a.w) - packedCellZ(s.g, b.w);
+                const Float4 par = rowFrame(a, s.g.cellsizef * float(dyc), s.g.cellsizef * float(dzc));
                 float dx, dy, dz;
-                brute += isNeighbour(pairOffset<kDim>(par, s.poscell[j], packedCellX(s.g, a.w), s.g, dx, dy, dz), s.c) ? 1 : 0;
+                const float rr2 = pairOffset<kDim>(par, b, packedCellX(s.g, a.w), s.g, dx, dy, dz);
+                brute += isNeighbour(rr2, s.c) ? 1 : 0;
             }
             EXPECT_EQ(n2.size(), brute) << "particle " << i;
             if (cs == s.cs_bound.data()) {  // the GPU's walk of the boundary block, on its own extents
