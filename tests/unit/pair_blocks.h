@@ -1,8 +1,9 @@
 // SeaSpring — MIT licence.
 /// \file pair_blocks.h
 /// \brief Test scaffolding for the pair loops (test_pair_lanes.cpp, test_row_extents.cpp): the
-///        fluid constants of a small water case, and a block of particles placed into the
-///        engine's layout (sorted by cell, stable, with absolute cell starts).
+///        particle arrays the pair loops read, the fluid constants of a small water case, and a
+///        block of particles placed into the engine's layout (sorted by cell, stable, with
+///        absolute cell starts).
 #pragma once
 
 #include <algorithm>
@@ -12,8 +13,32 @@
 
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
+#include "physics/fluid_pair_terms.h"
 
 namespace seaspring::test {
+
+/// Fluid and boundary blocks in the engine's layout (boundary block first), with what the pair
+/// loops read of them.
+struct PairBlocks {
+    physics::CellGrid g;
+    physics::FluidConstants c;
+    std::uint32_t nb = 0, nf = 0;
+    std::vector<physics::Float4> poscell, velrho;
+    std::vector<physics::Float2> press_ovrho;
+    std::vector<physics::SymTensor> tau;  ///< SPS stresses (empty where a test has none)
+    std::vector<std::uint32_t> cs_bound, cs_fluid;
+
+    physics::InteractionInputs inputs() const {
+        physics::InteractionInputs in;
+        in.poscell = poscell.data();
+        in.velrho = velrho.data();
+        in.cell_start_bound = cs_bound.data();
+        in.cell_start_fluid = cs_fluid.data();
+        in.tau = tau.empty() ? nullptr : tau.data();
+        in.press_ovrho = press_ovrho.data();
+        return in;
+    }
+};
 
 /// Water at rho0 = 1000 with cs0 = 20 m/s, particle spacing dp and smoothing length h; `visco`
 /// the artificial alpha (or a laminar nu), boundary factor 0.7, DDT 0.1, gravity -9.81 z.

@@ -34,26 +34,7 @@ namespace {
 
 /// Random fluid particles over a box and boundary particles in a floor layer, each block sorted by
 /// cell (then index), with random velocities, densities (hence pressures) and SPS stresses.
-struct Scene {
-    CellGrid g;
-    FluidConstants c;
-    std::uint32_t nb = 0, nf = 0;
-    std::vector<Float4> poscell, velrho;
-    std::vector<Float2> press_ovrho;
-    std::vector<SymTensor> tau;
-    std::vector<std::uint32_t> cs_bound, cs_fluid;
-
-    InteractionInputs inputs() const {
-        InteractionInputs in;
-        in.poscell = poscell.data();
-        in.velrho = velrho.data();
-        in.cell_start_bound = cs_bound.data();
-        in.cell_start_fluid = cs_fluid.data();
-        in.tau = tau.data();
-        in.press_ovrho = press_ovrho.data();
-        return in;
-    }
-};
+struct Scene : seaspring::test::PairBlocks {};
 
 Scene makeScene(int dim, int cell_div, std::mt19937& rng, std::uint32_t density = 1) {
     Scene s;

@@ -34,23 +34,12 @@ namespace {
 /// Fluid particles in a box and boundary particles in a floor layer: on lattices of spacing dp
 /// (`lattice`) or at random, each block sorted by cell, then displaced by up to 0.9 of the skin
 /// while keeping their cells (a state between two sorts).
-struct Layout {
-    CellGrid g;
-    FluidConstants c;
-    std::uint32_t nb = 0, nf = 0;
-    std::vector<Float4> poscell, velrho;
-    std::vector<Float2> press_ovrho;
-    std::vector<std::uint32_t> cs_bound, cs_fluid;
+struct Layout : seaspring::test::PairBlocks {
     std::vector<float> ext;        ///< both blocks' (the host's)
     std::vector<float> bound_ext;  ///< the boundary block's (the GPU's walk of that block)
 
     InteractionInputs inputs(bool with_ext) const {
-        InteractionInputs in;
-        in.poscell = poscell.data();
-        in.velrho = velrho.data();
-        in.cell_start_bound = cs_bound.data();
-        in.cell_start_fluid = cs_fluid.data();
-        in.press_ovrho = press_ovrho.data();
+        InteractionInputs in = PairBlocks::inputs();
         if (with_ext) {
             in.row_ext = rowExtentsIn(ext.data(), g);
             in.bound_ext = rowExtentsIn(bound_ext.data(), g);
