@@ -108,8 +108,12 @@ SEASPRING_HD inline void fluidPairsInRowMasked(std::uint32_t pb, std::uint32_t p
 
 /// The pairs of `psa` with the candidates of one block (`cell_start` of that block), row by row
 /// (forEachCandidateRow, or the host's row table): kCompact (the host), every lane's partial at
-/// once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0].
-template <class Opt, bool kBound, bool kCompact, bool kMask = false>
+/// once into acc[0, lanes); otherwise lane `lane`'s partial into acc[0]. kExt (the GPU): the
+/// fluid block's rows tested against that block's extents (in.fluid_ext,
+/// forEachCandidateRowInExtents), the only walk of that block compiled in (the cell walk beside
+/// it in one kernel, chosen at run time, cost the kernel 6%: docs/performance-large.md,
+/// twenty-eighth session).
+template <class Opt, bool kBound, bool kCompact, bool kMask = false, bool kExt = false>
 SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, const Float4& psa,
                                            const Float4& va, float ovrhoa, float pressa,
                                            const SymTensor& taua, const InteractionInputs& in,
@@ -127,6 +131,10 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
         else
             fluidPairsInRow<Opt, kBound>(pb, pe, lane, lanes, par, cax, va, ovrhoa, pressa, taua, in, c, g, *acc);
     };
+    if constexpr (kExt && !kBound) {
+        forEachCandidateRowInExtents<Opt::dim>(psa, cell_start, in.fluid_ext, c, g, row);
+        return;
+    }
     if (rows != nullptr && !rows->full)
         rows->forEachCandidateRow(psa, cell_start, row);
     else if (kBound && !kCompact && in.bound_ext.lo[0] != nullptr)
@@ -138,13 +146,13 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
 
 /// The partial sums of fluid particle `i` (fluid neighbours, then boundary neighbours): kCompact,
 /// all `lanes` partials into acc[0, lanes) in one walk (the host's path); otherwise lane `lane`'s
-/// alone into acc[0] (the GPU's path: one thread per lane). acc[] starts as FluidAccum{}.
+/// alone into acc[0] (the GPU's path: one thread per lane). kExt: see fluidPairsInBlock. acc[] starts as FluidAccum{}.
 /// kMask: the fluid block's rows through fluidPairsInRowMasked; the boundary block's always
 /// through the direct loop (the same bits either way): its pairs are cheaper (no neighbour
 /// stress, velocity gradient or diffusion) and only the warp's particles near a wall walk it,
 /// so the mask's second offset per pair costs more there than it saves (FlexStruc Liao 3D 0.99,
 /// SPHERIC laminar+SPS 0.985; docs/performance-large.md, twentieth session).
-template <class Opt, bool kCompact, bool kMask = false>
+template <class Opt, bool kCompact, bool kMask = false, bool kExt = false>
 SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, std::uint32_t lanes,
                                            const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
                                            FluidAccum* acc) {
@@ -163,7 +171,7 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     } else {
         (void)rows;
     }
-    fluidPairsInBlock<Opt, false, kCompact, kMask>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
+    fluidPairsInBlock<Opt, false, kCompact, kMask, kExt>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
                                                    lanes, acc, rt);
     if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
         fluidPairsInBlock<Opt, true, kCompact, false>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g,
@@ -172,12 +180,12 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
 
 /// Lane `lane`'s partial sums of fluid particle `i` (the GPU's path, one thread per lane;
 /// kMask: fluidPairsInRowMasked, the same bits).
-template <class Opt, bool kMask = false>
+template <class Opt, bool kMask = false, bool kExt = false>
 SEASPRING_HD inline FluidAccum fluidLanePartial(std::uint32_t i, std::uint32_t lane, std::uint32_t lanes,
                                                 const InteractionInputs& in, const FluidConstants& c,
                                                 const CellGrid& g) {
     FluidAccum acc;
-    fluidLanePartials<Opt, false, kMask>(i, lane, lanes, in, c, g, &acc);
+    fluidLanePartials<Opt, false, kMask, kExt>(i, lane, lanes, in, c, g, &acc);
     return acc;
 }
 
@@ -244,8 +252,9 @@ SEASPRING_HD inline FluidAccum fluidParticleForces(std::uint32_t i, const Intera
 /// Force evaluation of DBC boundary particle `i`: continuity with fluid neighbours and the
 /// viscous dt measure (boundary particles feel no force: their motion is prescribed).
 /// The row walk is forEachCandidateRow's; kCompact (the host): the rows from a RowTable (the
-/// same rows) and the pairs through a BoundBatch (pair_batch.h: the same bits).
-template <class Opt, bool kCompact = false>
+/// same rows) and the pairs through a BoundBatch (pair_batch.h: the same bits); kExt (the GPU):
+/// the fluid block's rows tested against its extents (in.fluid_ext; the same neighbours).
+template <class Opt, bool kCompact = false, bool kExt = false>
 SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionInputs& in,
                                              const FluidConstants& c, const CellGrid& g,
                                              float& ar_out, float& visc_out) {
@@ -278,7 +287,10 @@ SEASPRING_HD inline void boundParticleForces(std::uint32_t i, const InteractionI
                 addBoundPairTerms(ar, visc, boundPairTerms<Opt>(j, drx, dry, drz, rr2, va, in, c));
             }
         };
-        forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, row);
+        if constexpr (kExt)
+            forEachCandidateRowInExtents<Opt::dim>(psa, in.cell_start_fluid, in.fluid_ext, c, g, row);
+        else
+            forEachCandidateRow<Opt::dim>(psa, in.cell_start_fluid, c, g, row);
     }
     ar_out = ar;
     visc_out = visc;

@@ -33,12 +33,15 @@ struct InteractionInputs {
     /// mDBC SlipMode 2/3 (null otherwise): per boundary particle, the velocity its viscous
     /// terms use (the tangential ghost velocity, mdbc.h); its velrho keeps the wall's.
     const Float4* bound_visc_vel = nullptr;
-    /// The host's row extents of this evaluation (row_extents.h; none on the GPU, whose walk
-    /// tests the rows' cells): its row table (RowTable) tests rows against them.
+    /// The host's row extents of this evaluation, both blocks' joined (row_extents.h; none on the
+    /// GPU): its row table (RowTable) tests rows against them.
     RowExtents row_ext;
     /// The GPU's extents of the boundary block's rows (its walls keep their lattice): its walk of
     /// that block tests rows against them (forEachCandidateRowInExtents); none on the host.
     RowExtents bound_ext;
+    /// The GPU's extents of the fluid block's rows at this evaluation (none on the host): its
+    /// walks of that block test rows against them (forEachCandidateRowInExtents).
+    RowExtents fluid_ext;
 };
 
 /// (p, 1/rho) of particle i, computed once per force evaluation before the pair loops.

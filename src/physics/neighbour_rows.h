@@ -177,8 +177,8 @@ SEASPRING_HD_INLINE void forEachCandidateRow(const Float4& psa, const std::uint3
 /// forEachZInReach tested against their particles' extents (rowSpanInExtent) instead of their
 /// cells. Every row and cell that can hold a neighbour, in the same order (in practice fewer
 /// rows and cells than the cell walk's), so the same neighbours in the same order; pair lanes by
-/// index keep every lane's sum. The GPU's walk of the boundary block, whose walls keep their
-/// lattice.
+/// index keep every lane's sum. The GPU's walks: of the fluid block on that block's extents of
+/// the evaluation, of the boundary block on its own where the walls are fixed.
 template <int kDim, class RowFn>
 SEASPRING_HD_INLINE void forEachCandidateRowInExtents(const Float4& psa, const std::uint32_t* cell_start,
                                                       const RowExtents& ext, const FluidConstants& c,

@@ -2,16 +2,17 @@
 /// \file row_extents.h
 /// \brief Row extents: for each row of cells (fixed y and z cells, every x), the least and
 ///        greatest cell-relative offsets, along each axis, of the particles it holds now. The
-///        host's row table (neighbour_rows.h, RowTable) tests a row against them instead of
-///        against the row's cells: where the particles of a row lie on a line or a lattice
-///        inside their cells (still water, the first steps of every run), far fewer rows and
-///        cells are in reach (docs/performance-large.md, twenty-seventh session).
+///        host's row table (neighbour_rows.h, RowTable) and the GPU's walks
+///        (forEachCandidateRowInExtents) test a row against them instead of against the row's
+///        cells: where the particles of a row lie on a line or a lattice inside their cells
+///        (still water, the first steps of every run), far fewer rows and cells are in reach
+///        (docs/performance-large.md, twenty-seventh and twenty-eighth sessions).
 ///
 /// Exact: the extents bound the positions the pair loops read, so a row or cell that fails the
 /// test holds no particle that could pass the exact pair test (isNeighbour). The neighbours and
 /// their order are unchanged, and with pair lanes (a candidate's lane is its index mod the
-/// lanes, fluid_interaction.h) so is every lane's sum: the host with extents gives the GPU's
-/// bits, whose walk tests the rows' cells.
+/// lanes, fluid_interaction.h) so is every lane's sum: the host's row table and the GPU's walks,
+/// which skip different candidates (each its own extents), give the same bits as the cell walk.
 #pragma once
 
 #include <cstdint>
@@ -47,31 +48,59 @@ SEASPRING_HD inline RowExtents rowExtentsIn(const float* data, const CellGrid& g
     return e;
 }
 
+/// One row's extents being formed: least and greatest offsets along x, y, z.
+struct RowExtentAccum {
+    float lo[3] = {kEmptyRowExtent, kEmptyRowExtent, kEmptyRowExtent};
+    float hi[3] = {-kEmptyRowExtent, -kEmptyRowExtent, -kEmptyRowExtent};
+    /// Particle offsets o joined (a NaN offset is left out: no pair test accepts it).
+    SEASPRING_HD void add(const float* o) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = o[a] < lo[a] ? o[a] : lo[a];
+            hi[a] = o[a] > hi[a] ? o[a] : hi[a];
+        }
+    }
+    /// Two accumulators joined (exact in any order: minima and maxima).
+    SEASPRING_HD void join(const RowExtentAccum& b) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = b.lo[a] < lo[a] ? b.lo[a] : lo[a];
+            hi[a] = b.hi[a] > hi[a] ? b.hi[a] : hi[a];
+        }
+    }
+};
+
+/// Lane `lane` of `lanes`' share of row r's extents over one block (cell starts `cs`): its
+/// particles j with j mod lanes = lane (the GPU joins a warp's shares, the host takes lanes 1).
+SEASPRING_HD inline RowExtentAccum rowExtentShare(std::uint32_t r, std::uint32_t lane, std::uint32_t lanes,
+                                                  const CellGrid& g, const std::uint32_t* cs,
+                                                  const Float4* poscell) {
+    RowExtentAccum e;
+    const std::uint32_t c0 = r * std::uint32_t(g.ncx), c1 = c0 + std::uint32_t(g.ncx);
+    const std::uint32_t pe = cs[c1];
+    for (std::uint32_t j = cs[c0] + lane; j < pe; j += lanes) {
+        const Float4 p = poscell[j];
+        const float o[3] = {p.x, p.y, p.z};
+        e.add(o);
+    }
+    return e;
+}
+
+/// Row r's extents written into `data` (arrays as rowExtentsIn).
+SEASPRING_HD inline void storeRowExtent(std::uint32_t r, const CellGrid& g, const RowExtentAccum& e, float* data) {
+    const std::uint32_t s = rowExtentStride(g);
+    for (int a = 0; a < 3; ++a) {
+        data[(2 * a) * s + r] = e.lo[a];
+        data[(2 * a + 1) * s + r] = e.hi[a];
+    }
+}
+
 /// Row r's extents over the particles of one block (cell starts `cs_a`) or two (and `cs_b`, when
 /// not null) into `data` (rowExtentStride(g) floats per array, arrays as rowExtentsIn). Minima
 /// and maxima are exact in any order; a NaN offset (a particle no pair test accepts) is left out.
 SEASPRING_HD inline void rowExtentAt(std::uint32_t r, const CellGrid& g, const std::uint32_t* cs_a,
                                      const std::uint32_t* cs_b, const Float4* poscell, float* data) {
-    float lo[3] = {kEmptyRowExtent, kEmptyRowExtent, kEmptyRowExtent};
-    float hi[3] = {-kEmptyRowExtent, -kEmptyRowExtent, -kEmptyRowExtent};
-    const std::uint32_t c0 = r * std::uint32_t(g.ncx), c1 = c0 + std::uint32_t(g.ncx);
-    const std::uint32_t* blocks[2] = {cs_a, cs_b};
-    for (const std::uint32_t* cs : blocks) {
-        if (cs == nullptr) continue;
-        for (std::uint32_t j = cs[c0]; j < cs[c1]; ++j) {
-            const Float4 p = poscell[j];
-            const float o[3] = {p.x, p.y, p.z};
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = o[a] < lo[a] ? o[a] : lo[a];
-                hi[a] = o[a] > hi[a] ? o[a] : hi[a];
-            }
-        }
-    }
-    const std::uint32_t s = rowExtentStride(g);
-    for (int a = 0; a < 3; ++a) {
-        data[(2 * a) * s + r] = lo[a];
-        data[(2 * a + 1) * s + r] = hi[a];
-    }
+    RowExtentAccum e = rowExtentShare(r, 0u, 1u, g, cs_a, poscell);
+    if (cs_b != nullptr) e.join(rowExtentShare(r, 0u, 1u, g, cs_b, poscell));
+    storeRowExtent(r, g, e, data);
 }
 
 /// Distance along one axis from offset `a` to the interval [lo, hi], less `margin`, floored at 0.

@@ -341,7 +341,8 @@ private:
         const physics::RowExtents ext = row_ext_.update(exec_, setup_.grid, cs_fluid_.data(), cs_bound_.data(),
                                                         p_.poscell.data(), setup_.nmoving > 0 || solid_.n > 0);
         (Exec::kCompactPairs ? a.in.row_ext : a.in.bound_ext) = ext;  // the host's row tables; the GPU's boundary walk
-        pressures(a);
+        a.in.fluid_ext = row_ext_.fluidExtents(setup_.grid);  // the GPU's; filled in the pressures' launch
+        pressures(a, true);
         dispatchKernelDim(setup_.physics, [&](auto kernel, auto dim) {
             ForcePasses<Exec, decltype(kernel), decltype(dim)::value>::pairs(exec_, setup_.physics, a);
         });
@@ -400,12 +401,25 @@ private:
     }
 
     /// The pressure pass; with mDBC, in the same launch, the boundary particles' densities (and
-    /// velocities) from their ghost nodes first.
-    void pressures(const ForceArgs& a) {
+    /// velocities) from their ghost nodes first. `fluid_extents` (a force evaluation): the GPU's
+    /// fluid-block row extents too (RowExtentsCache::fluidPass; without mDBC in the same launch,
+    /// which spares the small cases a launch: FlexStruc Liao 2D and the Antoci gate lost 4–6%
+    /// with a launch of its own).
+    void pressures(const ForceArgs& a, bool fluid_extents = false) {
+        const std::uint32_t ext_items = fluid_extents ? row_ext_.fluidItems(setup_.grid) : 0u;
+        const RowExtentLanesPass ext = row_ext_.fluidPass(setup_.grid, cs_fluid_.data(), p_.poscell.data());
         if (!setup_.mdbc.enabled) {
+            if constexpr (!Exec::kCompactPairs) {  // (the host has no items)
+                if (ext_items > 0u) {
+                    exec_.template forEachIndependent<LaunchDefault, LaunchRowLanes>(
+                        0u, a.np, PressurePass{a.v, setup_.fluid}, 0u, ext_items, ext);
+                    return;
+                }
+            }
             exec_.template forEach<LaunchDefault>(0u, a.np, PressurePass{a.v, setup_.fluid});
             return;
         }
+        if (ext_items > 0u) exec_.template forEach<LaunchRowLanes>(0u, ext_items, ext);
         physics::MdbcInputs in;
         in.normal0 = mdbc_normal0_.data();
         in.visc_vel = mdbc_visc_vel_.empty() ? nullptr : mdbc_visc_vel_.data();

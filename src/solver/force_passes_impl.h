@@ -54,7 +54,7 @@ struct FluidLanesPass {
     SEASPRING_HD void operator()(std::uint32_t k) const {
         const std::uint32_t lane = k & (a.lanes - 1u);
         const std::uint32_t i = a.nbound + (k >> a.lane_shift);
-        physics::FluidAccum acc = physics::fluidLanePartial<Opt, kMask>(i, lane, a.lanes, a.in, a.c, a.g);
+        physics::FluidAccum acc = physics::fluidLanePartial<Opt, kMask, true>(i, lane, a.lanes, a.in, a.c, a.g);
         acc = combineAcrossLanes(acc, a.lanes, physics::CombineLanePair<Opt>{});
         if (lane != 0u) return;
         physics::finishFluidAccum<Opt>(acc);
@@ -68,7 +68,7 @@ struct BoundForcesPass {
     ForceArgs a;
     SEASPRING_HOST_FLATTEN SEASPRING_HD void operator()(std::uint32_t i) const {
         float ar, visc;
-        physics::boundParticleForces<Opt, kCompact>(i, a.in, a.c, a.g, ar, visc);
+        physics::boundParticleForces<Opt, kCompact, !kCompact>(i, a.in, a.c, a.g, ar, visc);
         a.v.acear[i] = physics::Float4{0.f, 0.f, 0.f, ar};
         a.v.visc[i] = visc;
     }

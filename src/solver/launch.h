@@ -14,6 +14,13 @@ struct LaunchDefault {
     static constexpr int kGpuThreads = 256;
     static constexpr int kCpuChunk = 0;
 };
+/// Passes whose items are the lanes of a warp-wide group (RowExtentLanesPass: on the GPU every
+/// thread of a warp takes part, so the launch's blocks are whole warps from index 0); the host
+/// runs them with one lane per item.
+struct LaunchRowLanes {
+    static constexpr int kGpuThreads = LaunchDefault::kGpuThreads;
+    static constexpr int kCpuChunk = 64;
+};
 /// The fluid particles' pair loops (uneven work per particle). Blocks of 64 threads, compiled
 /// for 128 (kGpuBoundThreads: the registers and code of blocks of 128): a block's slot on an SM
 /// is free once its two warps are done, not four, so more warps stay resident (NVIDIA H200,

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "core/lane_group.h"
 #include "physics/blowup_bounds.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_pair_terms.h"
@@ -93,6 +94,31 @@ struct RowExtentsPass {
     SEASPRING_HD void operator()(std::uint32_t r) const {
         physics::rowExtentAt(r, g, cs_a, cs_b, poscell, data);
     }
+};
+
+/// Row extents by a group of `lanes` threads per row (the GPU: a warp, each thread a share of
+/// the row's particles, joined across the group; the host: lanes 1): item k is lane k mod lanes
+/// of row k / lanes, over the block of `cs`. The same extents as RowExtentsPass (exact in any
+/// order).
+struct RowExtentLanesPass {
+    physics::CellGrid g;
+    const std::uint32_t* cs;
+    const physics::Float4* poscell;
+    float* data;
+    std::uint32_t lanes;
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        const std::uint32_t r = k / lanes, lane = k & (lanes - 1u);
+        physics::RowExtentAccum e = physics::rowExtentShare(r, lane, lanes, g, cs, poscell);
+        e = combineAcrossLanes(e, lanes, JoinRowExtents{});
+        if (lane == 0u) physics::storeRowExtent(r, g, e, data);
+    }
+    struct JoinRowExtents {
+        SEASPRING_HD physics::RowExtentAccum operator()(physics::RowExtentAccum a,
+                                                         const physics::RowExtentAccum& b) const {
+            a.join(b);
+            return a;
+        }
+    };
 };
 
 struct CellStartFillPass {

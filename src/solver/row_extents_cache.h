@@ -1,11 +1,17 @@
 // SeaSpring — MIT licence.
 /// \file row_extents_cache.h
-/// \brief The engine's row extents (physics/row_extents.h): their memory and when the pass that
-///        fills them runs. On the host both blocks' at every force evaluation, for its row
-///        tables; on the GPU the boundary block's, for its walk of that block, where the walls
-///        are fixed: once after the first sort or a restart. With moving boundaries or solids the
-///        GPU takes none (a pass at every evaluation cost more than the walk saved: FlexStruc Liao
-///        3D 1.029 on an NVIDIA H200; docs/performance-large.md, twenty-seventh session).
+/// \brief The engine's row extents (physics/row_extents.h): their memory and when the passes
+///        that fill them run.
+///        - The host: both blocks' at every force evaluation, for its row tables.
+///        - The GPU, fluid block: at every force evaluation (RowExtentLanesPass, a warp per row,
+///          in the pressures' launch), for the fluid and boundary particles' walks of that block
+///          (physics/fluid_interaction.h, kExt). NVIDIA H200, against the cell walk: SPHERIC
+///          4.36 M and 13.29 M 0.86, laminar+SPS 0.92, FlexStruc Liao 3D 0.94, a disordered
+///          flow 1.01–1.02 (docs/performance-large.md, twenty-eighth session).
+///        - The GPU, boundary block: for its walk of that block where the walls are fixed, once
+///          after the first sort or a restart. With moving boundaries or solids the GPU takes
+///          none (a pass at every evaluation cost more than the walk saved: FlexStruc Liao 3D
+///          1.029; twenty-seventh session).
 #pragma once
 
 #include <cstdint>
@@ -18,8 +24,32 @@ namespace seaspring::solver {
 
 template <class Exec>
 struct RowExtentsCache {
-    typename Exec::template Buffer<float> data;
+    typename Exec::template Buffer<float> data;   ///< the host's (both blocks) or the GPU's boundary block's
+    typename Exec::template Buffer<float> fluid;  ///< the GPU's fluid block's
     bool bound_done = false;  ///< the GPU's boundary extents hold (reset by a restart)
+
+    /// The GPU's threads per row in fluidPass (a warp: the threads joining a row's shares).
+    static constexpr std::uint32_t kRowLanes = 32;
+
+    /// The GPU's fluid-block extents of this evaluation (none on the host): their memory, which
+    /// fluidPass fills before the pair loops read it.
+    physics::RowExtents fluidExtents(const physics::CellGrid& g) {
+        if constexpr (Exec::kCompactPairs) {
+            return physics::RowExtents{};
+        } else {
+            fluid.resize(6 * std::size_t(physics::rowExtentStride(g)));
+            return physics::rowExtentsIn(fluid.data(), g);
+        }
+    }
+    /// Items of fluidPass (0 on the host: nothing to run).
+    static std::uint32_t fluidItems(const physics::CellGrid& g) {
+        return Exec::kCompactPairs ? 0u : std::uint32_t(g.ncy) * std::uint32_t(g.ncz) * kRowLanes;
+    }
+    /// The pass that fills fluidExtents' memory from the fluid block (cell starts `cs_fluid`).
+    RowExtentLanesPass fluidPass(const physics::CellGrid& g, const std::uint32_t* cs_fluid,
+                                 const physics::Float4* poscell) {
+        return RowExtentLanesPass{g, cs_fluid, poscell, fluid.data(), kRowLanes};
+    }
 
     /// The extents this force evaluation's pair loops read (none: the GPU with moving walls).
     physics::RowExtents update(Exec& exec, const physics::CellGrid& g, const std::uint32_t* cs_fluid,

@@ -9,13 +9,16 @@
 ///          every neighbour (isNeighbour) among them, in the same order;
 ///        - the fluid and boundary particles' force sums keep their bits with extents, for 1, 2, 4
 ///          and 8 pair lanes (a candidate's lane is its index mod the lanes);
-///        - the GPU's walk of the boundary block on that block's own extents
-///          (forEachCandidateRowInExtents) finds the same neighbours in the same order, and the
-///          GPU's path keeps the sums' bits with it;
+///        - the GPU's walks of each block on that block's own extents
+///          (forEachCandidateRowInExtents; the fluid block's formed as a warp forms them, shares
+///          joined) find the same neighbours in the same order, and the GPU's path (the fluid
+///          and boundary particles' walks, the direct and the masked loop) keeps the sums' bits
+///          with them;
 ///        - on a lattice the extents leave out a large share of the candidates (what they are for).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdint>
 #include <numeric>
 #include <random>
@@ -37,12 +40,14 @@ namespace {
 struct Layout : seaspring::test::PairBlocks {
     std::vector<float> ext;        ///< both blocks' (the host's)
     std::vector<float> bound_ext;  ///< the boundary block's (the GPU's walk of that block)
+    std::vector<float> fluid_ext;  ///< the fluid block's (the GPU's walks of that block)
 
     InteractionInputs inputs(bool with_ext) const {
         InteractionInputs in = PairBlocks::inputs();
         if (with_ext) {
             in.row_ext = rowExtentsIn(ext.data(), g);
             in.bound_ext = rowExtentsIn(bound_ext.data(), g);
+            in.fluid_ext = rowExtentsIn(fluid_ext.data(), g);
         }
         return in;
     }
@@ -98,9 +103,15 @@ Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
     }
     s.ext.assign(6 * std::size_t(rowExtentStride(s.g)), 0.f);
     s.bound_ext = s.ext;
+    s.fluid_ext = s.ext;
     for (std::uint32_t r = 0; r < std::uint32_t(s.g.ncy * s.g.ncz); ++r) {
         rowExtentAt(r, s.g, s.cs_fluid.data(), s.cs_bound.data(), s.poscell.data(), s.ext.data());
         rowExtentAt(r, s.g, s.cs_bound.data(), nullptr, s.poscell.data(), s.bound_ext.data());
+        // The fluid block's as RowExtentLanesPass forms them on the GPU: a warp's 32 shares joined.
+        RowExtentAccum e = rowExtentShare(r, 0u, 32u, s.g, s.cs_fluid.data(), s.poscell.data());
+        for (std::uint32_t lane = 1; lane < 32u; ++lane)
+            e.join(rowExtentShare(r, lane, 32u, s.g, s.cs_fluid.data(), s.poscell.data()));
+        storeRowExtent(r, s.g, e, s.fluid_ext.data());
     }
     return s;
 }
@@ -120,12 +131,32 @@ void walk(const Layout& s, const RowTable& rows, std::uint32_t i, const std::uin
     });
 }
 
+/// The candidates the GPU's walk of the block of `cs` on that block's extents `ext` visits, and
+/// the neighbours among them.
+template <int kDim>
+void walkInExtents(const Layout& s, const std::vector<float>& ext, std::uint32_t i, const std::uint32_t* cs,
+                   std::vector<std::uint32_t>& cand, std::vector<std::uint32_t>& nbr) {
+    forEachCandidateRowInExtents<kDim>(s.poscell[i], cs, rowExtentsIn(ext.data(), s.g), s.c, s.g,
+                                       [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
+                                           for (std::uint32_t j = pb; j < pe; ++j) {
+                                               cand.push_back(j);
+                                               float dx, dy, dz;
+                                               if (isNeighbour(pairOffset<kDim>(par, s.poscell[j], cax, s.g, dx,
+                                                                                dy, dz),
+                                                               s.c))
+                                                   nbr.push_back(j);
+                                           }
+                                       });
+}
+
 /// Every particle's walks with and without extents (both blocks): the neighbours the same, in
 /// the same order, and no brute-force neighbour missing; returns the candidates visited with
-/// extents over those without.
+/// extents over those without (and, in the GPU's walks on each block's own extents,
+/// `bound_share` and `fluid_share`).
 template <int kDim>
-double checkWalks(const Layout& s, double& bound_share) {
-    std::size_t with = 0, without = 0, pairs = 0, bound_with = 0, bound_without = 0;
+double checkWalks(const Layout& s, double& bound_share, double& fluid_share) {
+    std::size_t with = 0, without = 0, pairs = 0, bound_with = 0, bound_without = 0, fluid_with = 0,
+                fluid_without = 0;
     for (std::uint32_t i = 0; i < s.nb + s.nf; ++i) {
         RowTable plain, narrow;
         plain.build<kDim>(s.poscell[i], s.c, s.g);
@@ -150,22 +181,14 @@ double checkWalks(const Layout& s, double& bound_share) {
                 brute += isNeighbour(rr2, s.c) ? 1 : 0;
             }
             EXPECT_EQ(n2.size(), brute) << "particle " << i;
-            if (cs == s.cs_bound.data()) {  // the GPU's walk of the boundary block, on its own extents
-                std::vector<std::uint32_t> c3, n3;
-                forEachCandidateRowInExtents<kDim>(
-                    s.poscell[i], cs, rowExtentsIn(s.bound_ext.data(), s.g), s.c, s.g,
-                    [&](std::uint32_t pb, std::uint32_t pe, const Float4& par, int cax) {
-                        for (std::uint32_t j = pb; j < pe; ++j) {
-                            c3.push_back(j);
-                            float dx, dy, dz;
-                            if (isNeighbour(pairOffset<kDim>(par, s.poscell[j], cax, s.g, dx, dy, dz), s.c))
-                                n3.push_back(j);
-                        }
-                    });
-                EXPECT_EQ(n1, n3) << "boundary block, particle " << i;
-                bound_with += c3.size();
-                bound_without += c1.size();
-            }
+            // The GPU's walk of this block on the block's own extents.
+            const bool bound = cs == s.cs_bound.data();
+            std::vector<std::uint32_t> c3, n3;
+            walkInExtents<kDim>(s, bound ? s.bound_ext : s.fluid_ext, i, cs, c3, n3);
+            EXPECT_TRUE(std::includes(c1.begin(), c1.end(), c3.begin(), c3.end())) << "particle " << i;
+            EXPECT_EQ(n1, n3) << (bound ? "boundary" : "fluid") << " block, particle " << i;
+            (bound ? bound_with : fluid_with) += c3.size();
+            (bound ? bound_without : fluid_without) += c1.size();
             with += c2.size();
             without += c1.size();
             pairs += n2.size();
@@ -175,6 +198,7 @@ double checkWalks(const Layout& s, double& bound_share) {
     EXPECT_GT(pairs, std::size_t(s.nf) * (kDim == 3 ? 20u : 6u));
     EXPECT_LE(bound_with, bound_without);
     bound_share = double(bound_with) / double(bound_without);
+    fluid_share = double(fluid_with) / double(fluid_without);
     return double(with) / double(without);
 }
 
@@ -182,19 +206,23 @@ template <int kDim>
 void checkLayouts(std::uint32_t seed) {
     std::mt19937 rng(seed);
     const Layout lat = makeLayout(kDim, true, rng);
-    double lat_bound = 1, rnd_bound = 1;
-    const double lat_share = checkWalks<kDim>(lat, lat_bound);
+    double lat_bound = 1, rnd_bound = 1, lat_fluid = 1, rnd_fluid = 1;
+    const double lat_share = checkWalks<kDim>(lat, lat_bound, lat_fluid);
     const Layout rnd = makeLayout(kDim, false, rng);
-    const double rnd_share = checkWalks<kDim>(rnd, rnd_bound);
+    const double rnd_share = checkWalks<kDim>(rnd, rnd_bound, rnd_fluid);
 
     // On a lattice a row's particles lie on one line (within the drift): a large share of the
     // candidates goes (SPHERIC Test 2's lattice: 257 of 461 are left, eighteenth session);
     // scattered particles fill their cells, so little does.
     // Measured: 2D 0.86 and 0.96, 3D 0.73 and 0.94 (lattice, random); the boundary block's walk
-    // on its own extents 2D 0.84 and 0.92, 3D 0.71 and 0.90.
+    // on its own extents 2D 0.84 and 0.92, 3D 0.71 and 0.90; the fluid block's on its own
+    // 2D 0.86 and 0.96, 3D 0.73 and 0.94.
     EXPECT_LT(lat_share, kDim == 3 ? 0.8 : 0.9) << kDim << "D lattice";
     EXPECT_LE(rnd_share, 1.0) << kDim << "D random";
     EXPECT_LT(lat_bound, kDim == 3 ? 0.8 : 0.9) << kDim << "D lattice, boundary block";
+    EXPECT_LT(lat_fluid, kDim == 3 ? 0.8 : 0.9) << kDim << "D lattice, fluid block";
+    std::printf("[ share    ] %dD: lattice %.3f (boundary %.3f, fluid %.3f), random %.3f (%.3f, %.3f)\n", kDim,
+                lat_share, lat_bound, lat_fluid, rnd_share, rnd_bound, rnd_fluid);
 }
 
 }  // namespace
@@ -221,6 +249,12 @@ TEST(RowExtents, EachRowsExtentsBoundItsParticlesInBothBlocks) {
             }
             filled += lo[r] < kEmptyRowExtent ? 1 : 0;
         }
+        // The fluid block's, formed from 32 shares (as a warp forms them), are that block's own.
+        std::vector<float> own(s.fluid_ext.size(), 0.f);
+        for (std::uint32_t r = 0; r < rows; ++r) rowExtentAt(r, s.g, s.cs_fluid.data(), nullptr, s.poscell.data(), own.data());
+        for (std::uint32_t r = 0; r < rows; ++r)
+            for (int a = 0; a < 6; ++a)
+                ASSERT_EQ(own[a * stride + r], s.fluid_ext[a * stride + r]) << dim << "D row " << r << " array " << a;
         EXPECT_GT(filled, int(rows) / 4);
         EXPECT_LT(filled, int(rows));  // empty rows occur, and keep the empty extents
     }
@@ -242,19 +276,38 @@ void checkForces(std::uint32_t seed) {
                 const FluidAccum b = fluidParticleForces<Opt, true>(i, narrow, s.c, s.g, lanes);
                 // The GPU's path (a direct walk per lane), its boundary block through the extents.
                 const FluidAccum d = fluidParticleForces<Opt, false>(i, narrow, s.c, s.g, lanes);
+                // The GPU's path as FluidLanesPass takes it: both blocks through their extents,
+                // the fluid block's rows by the direct and by the masked loop.
+                FluidAccum e[kMaxPairLanes], m[kMaxPairLanes];
+                for (std::uint32_t l = 0; l < lanes; ++l) {
+                    e[l] = fluidLanePartial<Opt, false, true>(i, l, lanes, narrow, s.c, s.g);
+                    m[l] = fluidLanePartial<Opt, true, true>(i, l, lanes, narrow, s.c, s.g);
+                }
+                combineLanes<Opt>(e, lanes);
+                combineLanes<Opt>(m, lanes);
+                finishFluidAccum<Opt>(e[0]);
+                finishFluidAccum<Opt>(m[0]);
                 const float fa[] = {a.ax, a.ay, a.az, a.ar, a.visc}, fb[] = {b.ax, b.ay, b.az, b.ar, b.visc},
-                            fd[] = {d.ax, d.ay, d.az, d.ar, d.visc};
+                            fd[] = {d.ax, d.ay, d.az, d.ar, d.visc},
+                            fe[] = {e[0].ax, e[0].ay, e[0].az, e[0].ar, e[0].visc},
+                            fm[] = {m[0].ax, m[0].ay, m[0].az, m[0].ar, m[0].visc};
                 for (int k = 0; k < 5; ++k) {
                     ASSERT_TRUE(sameBits(fa[k], fb[k])) << "particle " << i << ", " << lanes << " lanes, field " << k;
                     ASSERT_TRUE(sameBits(fa[k], fd[k]))
                         << "GPU path, particle " << i << ", " << lanes << " lanes, field " << k;
+                    ASSERT_TRUE(sameBits(fa[k], fe[k]))
+                        << "GPU path, fluid extents, particle " << i << ", " << lanes << " lanes, field " << k;
+                    ASSERT_TRUE(sameBits(fa[k], fm[k]))
+                        << "GPU path, fluid extents, masked, particle " << i << ", " << lanes << " lanes, field " << k;
                 }
             }
         for (std::uint32_t i = 0; i < s.nb; ++i) {
-            float ar1, visc1, ar2, visc2;
+            float ar1, visc1, ar2, visc2, ar3, visc3;
             boundParticleForces<Opt, true>(i, plain, s.c, s.g, ar1, visc1);
             boundParticleForces<Opt, true>(i, narrow, s.c, s.g, ar2, visc2);
+            boundParticleForces<Opt, false, true>(i, narrow, s.c, s.g, ar3, visc3);  // the GPU's, fluid extents
             ASSERT_TRUE(sameBits(ar1, ar2) && sameBits(visc1, visc2)) << "boundary particle " << i;
+            ASSERT_TRUE(sameBits(ar1, ar3) && sameBits(visc1, visc3)) << "GPU path, boundary particle " << i;
         }
     }
 }
@@ -262,4 +315,5 @@ void checkForces(std::uint32_t seed) {
 TEST(RowExtents, ForceSumsKeepTheirBitsWithPairLanes) {
     checkForces<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 2>>(34);
     checkForces<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 3>>(35);
+    checkForces<FluidOptions<CubicKernel, Viscosity::Laminar, DensityDiffusion::Molteni, 3>>(36);
 }
