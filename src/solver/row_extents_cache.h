@@ -15,12 +15,27 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 #include "physics/row_extents.h"
 #include "solver/launch.h"
 #include "solver/particle_passes.h"
 
 namespace seaspring::solver {
+
+/// Items of a pass with `lanes` threads per row of cells of `g` (rows x lanes): a launch indexes
+/// them with 32 bits, so a grid with more is refused (std::length_error naming its rows) rather
+/// than leaving rows without extents.
+inline std::uint32_t rowLaneItems(const physics::CellGrid& g, std::uint32_t lanes) {
+    const std::uint64_t n = std::uint64_t(g.ncy) * std::uint64_t(g.ncz) * lanes;
+    if (n > 0xffffffffull)
+        throw std::length_error("the grid's " + std::to_string(g.ncy) + " x " + std::to_string(g.ncz) +
+                                " rows of cells times " + std::to_string(lanes) +
+                                " threads per row exceed a launch's 2^32 indices (a coarser -cellmode or a "
+                                "smaller domain in y and z)");
+    return std::uint32_t(n);
+}
 
 template <class Exec>
 struct RowExtentsCache {
@@ -43,7 +58,7 @@ struct RowExtentsCache {
     }
     /// Items of fluidPass (0 on the host: nothing to run).
     static std::uint32_t fluidItems(const physics::CellGrid& g) {
-        return Exec::kCompactPairs ? 0u : std::uint32_t(g.ncy) * std::uint32_t(g.ncz) * kRowLanes;
+        return Exec::kCompactPairs ? 0u : rowLaneItems(g, kRowLanes);
     }
     /// The pass that fills fluidExtents' memory from the fluid block (cell starts `cs_fluid`).
     RowExtentLanesPass fluidPass(const physics::CellGrid& g, const std::uint32_t* cs_fluid,

@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "physics/cell_grid.h"
@@ -29,6 +31,7 @@
 #include "physics/fluid_interaction.h"
 #include "physics/row_extents.h"
 #include "pair_blocks.h"
+#include "solver/row_extents_cache.h"
 
 using namespace seaspring::physics;
 
@@ -316,4 +319,22 @@ TEST(RowExtents, ForceSumsKeepTheirBitsWithPairLanes) {
     checkForces<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 2>>(34);
     checkForces<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 3>>(35);
     checkForces<FluidOptions<CubicKernel, Viscosity::Laminar, DensityDiffusion::Molteni, 3>>(36);
+}
+
+// The GPU's extents pass indexes rows x 32 threads with 32 bits: a grid with more rows is refused
+// with its rows named, not run with rows left out.
+TEST(RowExtents, AGridWithMoreRowLanesThanALaunchIndexesIsRefused) {
+    CellGrid g;
+    g.ncx = 4;
+    g.ncy = 100;
+    g.ncz = 300;
+    EXPECT_EQ(seaspring::solver::rowLaneItems(g, 32u), 100u * 300u * 32u);
+    g.ncy = 20000;
+    g.ncz = 7000;  // 1.4e8 rows: 4.48e9 items
+    try {
+        seaspring::solver::rowLaneItems(g, 32u);
+        FAIL() << "no error";
+    } catch (const std::length_error& e) {
+        EXPECT_NE(std::string(e.what()).find("20000 x 7000 rows"), std::string::npos) << e.what();
+    }
 }
