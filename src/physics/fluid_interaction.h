@@ -146,7 +146,8 @@ SEASPRING_HD inline void fluidPairsInBlock(const std::uint32_t* cell_start, cons
 
 /// The partial sums of fluid particle `i` (fluid neighbours, then boundary neighbours): kCompact,
 /// all `lanes` partials into acc[0, lanes) in one walk (the host's path); otherwise lane `lane`'s
-/// alone into acc[0] (the GPU's path: one thread per lane). kExt: see fluidPairsInBlock. acc[] starts as FluidAccum{}.
+/// alone into acc[0] (the GPU's path: one thread per lane). kExt: see fluidPairsInBlock.
+/// acc[] starts as FluidAccum{}.
 /// kMask: the fluid block's rows through fluidPairsInRowMasked; the boundary block's always
 /// through the direct loop (the same bits either way): its pairs are cheaper (no neighbour
 /// stress, velocity gradient or diffusion) and only the warp's particles near a wall walk it,
@@ -171,8 +172,8 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
     } else {
         (void)rows;
     }
-    fluidPairsInBlock<Opt, false, kCompact, kMask, kExt>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c, g, lane,
-                                                   lanes, acc, rt);
+    fluidPairsInBlock<Opt, false, kCompact, kMask, kExt>(in.cell_start_fluid, psa, va, ovrhoa, pressa, taua, in, c,
+                                                         g, lane, lanes, acc, rt);
     if (in.near == nullptr || (in.near[linearCellOf(g, psa.w)] & kNearBound) != 0)
         fluidPairsInBlock<Opt, true, kCompact, false>(in.cell_start_bound, psa, va, ovrhoa, pressa, taua, in, c, g,
                                                       lane, lanes, acc, rt);

@@ -68,18 +68,23 @@ struct RowExtentAccum {
     }
 };
 
-/// Lane `lane` of `lanes`' share of row r's extents over one block (cell starts `cs`): its
-/// particles j with j mod lanes = lane (the GPU joins a warp's shares, the host takes lanes 1).
+/// Lane `lane` of `lanes`' share of row r's extents over the particles of one block (cell
+/// starts `cs_a`) or two (and `cs_b`, when not null): in each block, its particles j with
+/// j mod lanes = lane (the GPU joins a warp's shares, the host takes lanes 1).
 SEASPRING_HD inline RowExtentAccum rowExtentShare(std::uint32_t r, std::uint32_t lane, std::uint32_t lanes,
-                                                  const CellGrid& g, const std::uint32_t* cs,
-                                                  const Float4* poscell) {
+                                                  const CellGrid& g, const std::uint32_t* cs_a,
+                                                  const std::uint32_t* cs_b, const Float4* poscell) {
     RowExtentAccum e;
     const std::uint32_t c0 = r * std::uint32_t(g.ncx), c1 = c0 + std::uint32_t(g.ncx);
-    const std::uint32_t pe = cs[c1];
-    for (std::uint32_t j = cs[c0] + lane; j < pe; j += lanes) {
-        const Float4 p = poscell[j];
-        const float o[3] = {p.x, p.y, p.z};
-        e.add(o);
+    const std::uint32_t* blocks[2] = {cs_a, cs_b};
+    for (const std::uint32_t* cs : blocks) {
+        if (cs == nullptr) continue;
+        const std::uint32_t pe = cs[c1];
+        for (std::uint32_t j = cs[c0] + lane; j < pe; j += lanes) {
+            const Float4 p = poscell[j];
+            const float o[3] = {p.x, p.y, p.z};
+            e.add(o);
+        }
     }
     return e;
 }
@@ -98,9 +103,7 @@ SEASPRING_HD inline void storeRowExtent(std::uint32_t r, const CellGrid& g, cons
 /// and maxima are exact in any order; a NaN offset (a particle no pair test accepts) is left out.
 SEASPRING_HD inline void rowExtentAt(std::uint32_t r, const CellGrid& g, const std::uint32_t* cs_a,
                                      const std::uint32_t* cs_b, const Float4* poscell, float* data) {
-    RowExtentAccum e = rowExtentShare(r, 0u, 1u, g, cs_a, poscell);
-    if (cs_b != nullptr) e.join(rowExtentShare(r, 0u, 1u, g, cs_b, poscell));
-    storeRowExtent(r, g, e, data);
+    storeRowExtent(r, g, rowExtentShare(r, 0u, 1u, g, cs_a, cs_b, poscell), data);
 }
 
 /// Distance along one axis from offset `a` to the interval [lo, hi], less `margin`, floored at 0.

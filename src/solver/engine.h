@@ -407,7 +407,7 @@ private:
     /// with a launch of its own).
     void pressures(const ForceArgs& a, bool fluid_extents = false) {
         const std::uint32_t ext_items = fluid_extents ? row_ext_.fluidItems(setup_.grid) : 0u;
-        const RowExtentLanesPass ext = row_ext_.fluidPass(setup_.grid, cs_fluid_.data(), p_.poscell.data());
+        const RowExtentsPass ext = row_ext_.fluidPass(setup_.grid, cs_fluid_.data(), p_.poscell.data());
         if (!setup_.mdbc.enabled) {
             if constexpr (!Exec::kCompactPairs) {  // (the host has no items)
                 if (ext_items > 0u) {

@@ -14,7 +14,7 @@ struct LaunchDefault {
     static constexpr int kGpuThreads = 256;
     static constexpr int kCpuChunk = 0;
 };
-/// Passes whose items are the lanes of a warp-wide group (RowExtentLanesPass: on the GPU every
+/// Passes whose items are the lanes of a warp-wide group (RowExtentsPass with a warp per row: on the GPU every
 /// thread of a warp takes part, so the launch's blocks are whole warps from index 0); the host
 /// runs them with one lane per item.
 struct LaunchRowLanes {

@@ -84,31 +84,22 @@ struct CellStartOuterPass {
     SEASPRING_HD void operator()(std::uint32_t c) const { physics::cellStartOuterAt(c, b, e, keys, cell_start); }
 };
 
-/// Row r's extents (physics::rowExtentAt) over the block of `cs_a` and, when not null, of `cs_b`.
+/// Row extents over the block of `cs_a` and, when not null, of `cs_b`, by `lanes` threads per row
+/// (a power of two <= 32): item k is lane k mod lanes of row k / lanes, each a share of the row's
+/// particles (physics::rowExtentShare), the shares joined across the lanes (on the GPU a warp's
+/// shuffles; exact in any order), the first lane writing the row (physics::storeRowExtent). One
+/// lane: a thread per row (the host, and the GPU's boundary block once); the GPU's fluid block
+/// at every evaluation: a warp per row.
 struct RowExtentsPass {
     physics::CellGrid g;
     const std::uint32_t* cs_a;
     const std::uint32_t* cs_b;
     const physics::Float4* poscell;
     float* data;
-    SEASPRING_HD void operator()(std::uint32_t r) const {
-        physics::rowExtentAt(r, g, cs_a, cs_b, poscell, data);
-    }
-};
-
-/// Row extents by a group of `lanes` threads per row (the GPU: a warp, each thread a share of
-/// the row's particles, joined across the group; the host: lanes 1): item k is lane k mod lanes
-/// of row k / lanes, over the block of `cs`. The same extents as RowExtentsPass (exact in any
-/// order).
-struct RowExtentLanesPass {
-    physics::CellGrid g;
-    const std::uint32_t* cs;
-    const physics::Float4* poscell;
-    float* data;
     std::uint32_t lanes;
     SEASPRING_HD void operator()(std::uint32_t k) const {
         const std::uint32_t r = k / lanes, lane = k & (lanes - 1u);
-        physics::RowExtentAccum e = physics::rowExtentShare(r, lane, lanes, g, cs, poscell);
+        physics::RowExtentAccum e = physics::rowExtentShare(r, lane, lanes, g, cs_a, cs_b, poscell);
         e = combineAcrossLanes(e, lanes, JoinRowExtents{});
         if (lane == 0u) physics::storeRowExtent(r, g, e, data);
     }

@@ -3,7 +3,7 @@
 /// \brief The engine's row extents (physics/row_extents.h): their memory and when the passes
 ///        that fill them run.
 ///        - The host: both blocks' at every force evaluation, for its row tables.
-///        - The GPU, fluid block: at every force evaluation (RowExtentLanesPass, a warp per row,
+///        - The GPU, fluid block: at every force evaluation (RowExtentsPass, a warp per row,
 ///          in the pressures' launch), for the fluid and boundary particles' walks of that block
 ///          (physics/fluid_interaction.h, kExt). NVIDIA H200, against the cell walk: SPHERIC
 ///          4.36 M and 13.29 M 0.86, laminar+SPS 0.92, FlexStruc Liao 3D 0.94, a disordered
@@ -61,9 +61,9 @@ struct RowExtentsCache {
         return Exec::kCompactPairs ? 0u : rowLaneItems(g, kRowLanes);
     }
     /// The pass that fills fluidExtents' memory from the fluid block (cell starts `cs_fluid`).
-    RowExtentLanesPass fluidPass(const physics::CellGrid& g, const std::uint32_t* cs_fluid,
+    RowExtentsPass fluidPass(const physics::CellGrid& g, const std::uint32_t* cs_fluid,
                                  const physics::Float4* poscell) {
-        return RowExtentLanesPass{g, cs_fluid, poscell, fluid.data(), kRowLanes};
+        return RowExtentsPass{g, cs_fluid, nullptr, poscell, fluid.data(), kRowLanes};
     }
 
     /// The extents this force evaluation's pair loops read (none: the GPU with moving walls).
@@ -76,7 +76,7 @@ struct RowExtentsCache {
             const std::uint32_t* first = kHost ? cs_fluid : cs_bound;  // the host: both blocks
             const std::uint32_t* second = kHost ? cs_bound : nullptr;
             exec.template forEach<LaunchDefault>(0u, std::uint32_t(g.ncy) * std::uint32_t(g.ncz),
-                                                 RowExtentsPass{g, first, second, poscell, data.data()});
+                                                 RowExtentsPass{g, first, second, poscell, data.data(), 1u});
             bound_done = true;
         }
         return physics::rowExtentsIn(data.data(), g);

@@ -110,10 +110,10 @@ Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
     for (std::uint32_t r = 0; r < std::uint32_t(s.g.ncy * s.g.ncz); ++r) {
         rowExtentAt(r, s.g, s.cs_fluid.data(), s.cs_bound.data(), s.poscell.data(), s.ext.data());
         rowExtentAt(r, s.g, s.cs_bound.data(), nullptr, s.poscell.data(), s.bound_ext.data());
-        // The fluid block's as RowExtentLanesPass forms them on the GPU: a warp's 32 shares joined.
-        RowExtentAccum e = rowExtentShare(r, 0u, 32u, s.g, s.cs_fluid.data(), s.poscell.data());
+        // The fluid block's as RowExtentsPass forms them on the GPU: a warp's 32 shares joined.
+        RowExtentAccum e = rowExtentShare(r, 0u, 32u, s.g, s.cs_fluid.data(), nullptr, s.poscell.data());
         for (std::uint32_t lane = 1; lane < 32u; ++lane)
-            e.join(rowExtentShare(r, lane, 32u, s.g, s.cs_fluid.data(), s.poscell.data()));
+            e.join(rowExtentShare(r, lane, 32u, s.g, s.cs_fluid.data(), nullptr, s.poscell.data()));
         storeRowExtent(r, s.g, e, s.fluid_ext.data());
     }
     return s;
@@ -254,7 +254,8 @@ TEST(RowExtents, EachRowsExtentsBoundItsParticlesInBothBlocks) {
         }
         // The fluid block's, formed from 32 shares (as a warp forms them), are that block's own.
         std::vector<float> own(s.fluid_ext.size(), 0.f);
-        for (std::uint32_t r = 0; r < rows; ++r) rowExtentAt(r, s.g, s.cs_fluid.data(), nullptr, s.poscell.data(), own.data());
+        for (std::uint32_t r = 0; r < rows; ++r)
+            rowExtentAt(r, s.g, s.cs_fluid.data(), nullptr, s.poscell.data(), own.data());
         for (std::uint32_t r = 0; r < rows; ++r)
             for (int a = 0; a < 6; ++a)
                 ASSERT_EQ(own[a * stride + r], s.fluid_ext[a * stride + r]) << dim << "D row " << r << " array " << a;
