@@ -73,6 +73,19 @@ SEASPRING_HD inline Float4 makePosCell(const CellGrid& g, const Double3& p, std:
     return r;
 }
 
+/// A fluid particle removed from the run between two sorts (excluded at a divide that did not
+/// sort): it keeps its slot in its block until the next sort moves it past the block's active
+/// end, with NaN offsets and its packed cell. No pair test accepts a NaN offset (isNeighbour,
+/// mDBC's and the gauges' tests are false for NaN), row extents leave it out, and the passes
+/// over the active range skip it (removedFromRun): it takes part in nothing, as if sorted out.
+SEASPRING_HD inline Float4 removedPosCell(float packed) {
+    const float nan = uintBitsToFloat(0x7FC00000u);  // a quiet NaN, the same bits on every backend
+    return Float4{nan, nan, nan, packed};
+}
+/// Whether a PosCell is removedPosCell's (no particle in the run has a NaN offset: a position
+/// that is not finite is excluded, kExcludedNotFinite, and removed at the next divide).
+SEASPRING_HD inline bool removedFromRun(const Float4& poscell) { return !(poscell.x == poscell.x); }
+
 SEASPRING_HD inline int packedCellX(const CellGrid& g, float w);
 SEASPRING_HD inline int packedCellY(const CellGrid& g, float w);
 SEASPRING_HD inline int packedCellZ(const CellGrid& g, float w);

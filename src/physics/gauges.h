@@ -128,14 +128,16 @@ struct MaxzRow {
     double lx, ly, r2;
 };
 
-/// The highest z in one row (-1e300 when no fluid particle is in reach); positions `pos`
-/// indexed as cell_start_fluid.
+/// The highest z in one row (-1e300 when no fluid particle is in reach); positions `pos` and
+/// PosCells `poscell` indexed as cell_start_fluid (particles removed from the run left out).
 template <int kDim>
-SEASPRING_HD inline double maxzRowAt(const MaxzRow& r, const std::uint32_t* cell_start_fluid, const Double3* pos) {
+SEASPRING_HD inline double maxzRowAt(const MaxzRow& r, const std::uint32_t* cell_start_fluid, const Double3* pos,
+                                     const Float4* poscell) {
     double zmax = -1e300;
     const std::uint32_t pb = cell_start_fluid[r.row_first_cell + std::uint32_t(r.x0)];
     const std::uint32_t pe = cell_start_fluid[r.row_first_cell + std::uint32_t(r.x1) + 1u];
     for (std::uint32_t j = pb; j < pe; ++j) {
+        if (removedFromRun(poscell[j])) continue;
         const Double3 p = pos[j];
         const double dx = r.lx - p.x;
         const double dy = kDim == 3 ? r.ly - p.y : 0.0;

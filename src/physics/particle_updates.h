@@ -132,11 +132,19 @@ SEASPRING_HD inline void posCellAt(std::uint32_t i, const ParticleView& v, const
 
 /// Between two sorts (skin > 0): particle i's PosCell refreshed in the cell it was sorted into
 /// (posCellInCell). Returns 1 when the next divide must sort: the particle left the skin of
-/// that cell, or was excluded (it must leave the active range).
+/// that cell. An excluded particle does not ask for a sort: it is removed from the run in its
+/// slot (removedPosCell) and leaves the active range at the next sort (which a particle that
+/// left its cell's skin asks for). In the violent phases of an open channel (the 3D sluice
+/// gate) particles leave the domain at most divides, where a sort for each cost a fifth of a
+/// step (docs/performance-large.md, twenty-ninth session).
 SEASPRING_HD inline std::uint32_t refreshPosCellAt(std::uint32_t i, const ParticleView& v, const CellGrid& g) {
+    if (v.excl[i] != kActive) {
+        v.poscell[i] = removedPosCell(v.poscell[i].w);
+        return 0u;
+    }
     bool outside;
     v.poscell[i] = posCellInCell(g, v.pos[i], v.poscell[i].w, outside);
-    return (outside || v.excl[i] != kActive) ? 1u : 0u;
+    return outside ? 1u : 0u;
 }
 
 /// A rigid motion x = R x0 + t (double), and the velocity over the coming interval.
@@ -174,6 +182,7 @@ SEASPRING_HD inline void motionAt(std::uint32_t i, const ParticleView& v, std::u
 SEASPRING_HD inline DtMaxima dtMaximaAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
                                         bool all_particles) {
     DtMaxima m;
+    if (i >= nbound && removedFromRun(v.poscell[i])) return m;  // out of the run: no dt measure
     m.visc = v.visc[i];
     const Float4 u = v.velrho[i];
     if (i >= nbound) {
@@ -194,6 +203,7 @@ SEASPRING_HD inline void spsTauAt(std::uint32_t i, const ParticleView& v, float 
 /// velrho_pre.
 SEASPRING_HD inline void symplecticPredictorAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
                                                double dt, const StepConstants& s) {
+    if (i >= nbound && removedFromRun(v.poscell[i])) return;  // out of the run: its state stays
     const Float4 vr0 = v.velrho[i];
     const Double3 p0 = v.pos[i];
     v.velrho_pre[i] = vr0;
@@ -213,6 +223,7 @@ SEASPRING_HD inline void symplecticPredictorAt(std::uint32_t i, std::uint32_t nb
 /// Symplectic corrector of particle i (from the predictor's state and velrho_pre).
 SEASPRING_HD inline void symplecticCorrectorAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v,
                                                double dt, const StepConstants& s) {
+    if (i >= nbound && removedFromRun(v.poscell[i])) return;
     const Float4 vr0 = v.velrho_pre[i];
     const float rho_half = v.velrho[i].w;
     const Float4 a = v.acear[i];
@@ -231,6 +242,7 @@ SEASPRING_HD inline void symplecticCorrectorAt(std::uint32_t i, std::uint32_t nb
 /// Verlet step of particle i; velrho_pre holds the state at n-1 and receives the state at n.
 SEASPRING_HD inline void verletAt(std::uint32_t i, std::uint32_t nbound, const ParticleView& v, double dt,
                                   bool euler, const StepConstants& s) {
+    if (i >= nbound && removedFromRun(v.poscell[i])) return;
     const Float4 vr = v.velrho[i];
     const Float4 vrm1 = v.velrho_pre[i];
     const Float4 a = v.acear[i];

@@ -129,7 +129,9 @@ public:
     /// read (between predictor and corrector); otherwise it is not reordered, as the next
     /// predictor overwrites it. (Verlet's state at n-1 is always kept.)
     /// With a skin (CellGrid::skinf > 0) it only refreshes PosCell while every particle stays
-    /// within the skin of the cell it was sorted into and none was excluded (cell_grid.h).
+    /// within the skin of the cell it was sorted into (cell_grid.h); a particle excluded since
+    /// is then removed from the run in its slot (physics::removedPosCell) and dropped to the
+    /// tail at the next sort.
     virtual void divide(bool keep_step_start) = 0;
     /// divide(), then the next force evaluation launched at once, without waiting for the
     /// divide's verdict (sort or not): its passes are gated on it, so a sort makes them do

@@ -59,6 +59,7 @@ public:
         dropForcesAhead();
         setup_ = s;
         sorted_ = false;
+        removed_ = 0u;
         counts_ = DivideCounts{};
         nbound_ = s.nbound;
         nfluid_ = s.nfluid;
@@ -105,8 +106,10 @@ public:
             sortBlocks(keep_step_start, kSortFluidBlock | kSortBoundaryBlock);
             return;
         }
-        const std::uint32_t verdict = exec_.reduce(refreshBegin(), nbound_ + nfluid_, 0u, refreshPass(), OrCombine{});
-        if (verdict != 0u) sortBlocks(keep_step_start, verdict);
+        const RefreshVerdict verdict =
+            exec_.reduce(refreshBegin(), nbound_ + nfluid_, RefreshVerdict{}, refreshPass(), RefreshCombine{});
+        removed_ = verdict.removed;
+        if (verdict.sort != 0u) sortBlocks(keep_step_start, verdict.sort);
     }
 
     void divideThenForces(bool keep_step_start) override {
@@ -114,8 +117,9 @@ public:
         ++counts_.divides;
         const bool gated = refreshes();
         if (gated) {  // the verdict stays on the device: it gates the evaluation's passes
-            exec_.reduceDeferred(refreshBegin(), nbound_ + nfluid_, 0u, refreshPass(), OrCombine{}, refresh_);
-            exec_.gate(refresh_.device());
+            exec_.reduceDeferred(refreshBegin(), nbound_ + nfluid_, RefreshVerdict{}, refreshPass(), RefreshCombine{},
+                                 refresh_);
+            exec_.gate(&refresh_.device()->sort);
         } else {
             sortBlocks(keep_step_start, kSortFluidBlock | kSortBoundaryBlock);
         }
@@ -230,7 +234,7 @@ public:
     DivideCounts divideCounts() const override { return counts_; }
     std::uint32_t activeFluid() override {
         settleDivide();
-        return nfluid_;
+        return nfluid_ - removed_;  // less those removed in their slots since the last sort
     }
     std::uint32_t notFiniteCount() override {
         noForcesAhead("notFiniteCount");
@@ -287,6 +291,7 @@ private:
         const bool fluid = (blocks & kSortFluidBlock) != 0u;
         if (fluid) {
             nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
+            removed_ = 0u;  // dropped after the active end
             nearFlags(cs_fluid_, physics::kNearFluid);
         }
         // PosCell from the new cells in the sorted blocks; fixed walls get theirs again (the same
@@ -308,10 +313,11 @@ private:
     void settleDivide() {
         if (!ahead_.on || !ahead_.gated) return;
         ahead_.gated = false;
-        const std::uint32_t verdict = refresh_.get();
-        if (verdict == 0u) return;
+        const RefreshVerdict verdict = refresh_.get();
+        removed_ = verdict.removed;
+        if (verdict.sort == 0u) return;
         ahead_.on = false;
-        sortBlocks(ahead_.keep, verdict);
+        sortBlocks(ahead_.keep, verdict.sort);
     }
     /// What changes the state cannot run between divideThenForces and computeForces (the
     /// evaluation launched ahead would be stale, and the SPS stress, mDBC's boundary values and
@@ -481,7 +487,8 @@ private:
 
     Exec exec_;
     typename Exec::template Deferred<std::uint32_t> solid_check_;  ///< startSolidsCheck's result
-    typename Exec::template Deferred<std::uint32_t> refresh_;      ///< divideThenForces' verdict: 1 = sort
+    typename Exec::template Deferred<RefreshVerdict> refresh_;     ///< divideThenForces' verdict
+    std::uint32_t removed_ = 0;  ///< fluid particles removed in their slots since the last sort
     typename Exec::template Deferred<physics::DtMaxima> dt_ahead_;  ///< divideThenForces' dt maxima
     ForcesAhead ahead_;
     bool solid_check_started_ = false;

@@ -69,6 +69,10 @@ void Engine<Exec>::loadState(const CheckpointData& in) {
         solid_.span = in.real("engine/solid_span");
     }
     nfluid_ = std::uint32_t(in.integer("engine/nfluid_active"));
+    // Particles removed in their slots since the file's last sort (their PosCell is the file's).
+    removed_ = nfluid_ == 0u ? 0u
+                             : exec_.reduce(nbound_, nbound_ + nfluid_, 0u, RemovedCountPass{p_.poscell.data()},
+                                            CountCombine{});
     sorted_ = in.integer("engine/sorted") != 0;
     counts_.divides = (unsigned long long)in.integer("engine/divides");
     counts_.sorts = (unsigned long long)in.integer("engine/sorts");

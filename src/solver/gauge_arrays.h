@@ -50,7 +50,8 @@ struct GaugeArrays {
                 0u, npts,
                 GaugeSamplePass<decltype(kernel), kDim>{points.data(), cs_fluid, v.poscell, v.velrho, setup.fluid,
                                                         setup.grid, samples.data()});
-            exec.template forEach<LaunchGauges>(0u, nrows, MaxzRowPass<kDim>{rows.data(), cs_fluid, v.pos, maxz.data()});
+            exec.template forEach<LaunchGauges>(
+                0u, nrows, MaxzRowPass<kDim>{rows.data(), cs_fluid, v.pos, v.poscell, maxz.data()});
         });
         if (nids > 0)
             exec.template forEach<LaunchGauges>(0u, nbound,

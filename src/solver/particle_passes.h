@@ -151,22 +151,35 @@ struct PosCellPass {
     SEASPRING_HD void operator()(std::uint32_t i) const { physics::posCellAt(i, v, g); }
 };
 
-/// Between two sorts: refreshes particle i's PosCell in its cell and gives the divide's verdict
-/// for it (reduced with OrCombine; each index is visited once): kSortFluidBlock or
-/// kSortBoundaryBlock, by i's block, when i has left its grown cell or was excluded
-/// (physics::refreshPosCellAt), else 0. The OR is 0 when no block needs a sort.
+/// A divide's verdict (RefreshPosCellPass, reduced with RefreshCombine; each index is visited
+/// once): `sort`, the blocks a particle has left its grown cell in (kSortFluidBlock,
+/// kSortBoundaryBlock; 0: no sort), and `removed`, the particles removed from the run in their
+/// slots (physics::refreshPosCellAt: excluded since the last sort). `sort` comes first: a gate
+/// (Exec::gate) reads it.
 constexpr std::uint32_t kSortFluidBlock = 1u, kSortBoundaryBlock = 2u;
+struct RefreshVerdict {
+    std::uint32_t sort = 0;
+    std::uint32_t removed = 0;
+};
+struct RefreshCombine {  // exact in any order (OR, integer sum)
+    SEASPRING_HD RefreshVerdict operator()(const RefreshVerdict& a, const RefreshVerdict& b) const {
+        return RefreshVerdict{a.sort | b.sort, a.removed + b.removed};
+    }
+};
+/// Between two sorts: refreshes particle i's PosCell in its cell and gives its share of the
+/// divide's verdict.
 struct RefreshPosCellPass {
     physics::ParticleView v;
     physics::CellGrid g;
     std::uint32_t nbound;
-    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const {
-        return physics::refreshPosCellAt(i, v, g) * (i < nbound ? kSortBoundaryBlock : kSortFluidBlock);
+    SEASPRING_HD RefreshVerdict operator()(std::uint32_t i) const {
+        const std::uint32_t left = physics::refreshPosCellAt(i, v, g);
+        // A boundary particle is never excluded (one whose position is not finite gets NaN
+        // offsets too, and asks for a sort: posCellInCell's `outside`): only fluid is counted.
+        const bool fluid = i >= nbound;
+        return RefreshVerdict{left * (fluid ? kSortFluidBlock : kSortBoundaryBlock),
+                              fluid && physics::removedFromRun(v.poscell[i]) ? 1u : 0u};
     }
-};
-
-struct OrCombine {
-    SEASPRING_HD std::uint32_t operator()(std::uint32_t a, std::uint32_t b) const { return a | b; }
 };
 
 // ---- moving boundaries, integration ------------------------------------------------------
@@ -208,6 +221,13 @@ struct VerletPass {
 };
 
 // ---- around the pair loops: pressure, SPS stress, dt maxima ------------------------------
+
+/// Value pass of the count of particles removed from the run in their slots (combined with
+/// CountCombine; physics::removedFromRun): the active fluid is the block's less these.
+struct RemovedCountPass {
+    const physics::Float4* poscell;
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const { return physics::removedFromRun(poscell[i]) ? 1u : 0u; }
+};
 
 /// Value pass of the blow-up scan's count (combined with CountCombine): 1 for a particle
 /// physics::particleNotFinite rejects.
@@ -269,8 +289,11 @@ struct MaxzRowPass {
     const physics::MaxzRow* rows;
     const std::uint32_t* cell_start_fluid;
     const physics::Double3* pos;
+    const physics::Float4* poscell;
     double* out;
-    SEASPRING_HD void operator()(std::uint32_t k) const { out[k] = physics::maxzRowAt<kDim>(rows[k], cell_start_fluid, pos); }
+    SEASPRING_HD void operator()(std::uint32_t k) const {
+        out[k] = physics::maxzRowAt<kDim>(rows[k], cell_start_fluid, pos, poscell);
+    }
 };
 
 struct GaugePositionPass {
