@@ -158,7 +158,9 @@ SEASPRING_HD inline void fluidLanePartials(std::uint32_t i, std::uint32_t lane, 
                                            const InteractionInputs& in, const FluidConstants& c, const CellGrid& g,
                                            FluidAccum* acc) {
     const Float4 psa = in.poscell[i];
-    if (removedFromRun(psa)) return;  // out of the run (removedPosCell): no pairs, zero sums
+    // Out of the run (removedPosCell): zero sums. Its NaN offsets would find no neighbour
+    // anyway (its cells come from the packed cell); this spares the walk.
+    if (removedFromRun(psa)) return;
     const Float4 va = in.velrho[i];
     const Float2 pa2 = in.press_ovrho[i];
     const float pressa = pa2.x, ovrhoa = pa2.y;

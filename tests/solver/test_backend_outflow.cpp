@@ -108,7 +108,7 @@ TYPED_TEST(BackendOutflow, ExcludedParticlesLeaveTheRunInTheirSlotsAsIfSortedOut
         symplecticStep(*b, dt);
         const physics::DtMaxima ms = symplecticStep(*sorted, dt);
         // The dt maxima over the particles in the run, within 2e-2 (2026-11-28: at most 1.7e-3;
-        // broken on purpose, a removed particle's walk and dt measure not skipped: 5.9e-2).
+        // broken on purpose, a removed particle's dt measure not skipped: 5.9e-2).
         const double d = std::max({relDiff(m.ace2, ms.ace2), relDiff(m.vel2, ms.vel2), relDiff(m.visc, ms.visc)});
         worst_maxima = std::max(worst_maxima, d);
         ASSERT_LT(d, 2e-2) << "step " << s << ": dt maxima " << m.ace2 << ", " << m.vel2 << ", " << m.visc << " against "

@@ -56,6 +56,8 @@ struct Layout : seaspring::test::PairBlocks {
     }
 };
 
+void formExtents(Layout& s);
+
 Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
     Layout s;
     const double dp = 0.01, h = 2.0 * dp, skin = 0.05;
@@ -104,6 +106,13 @@ Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
         const float rho = s.velrho[i].w;
         s.press_ovrho[i] = Float2{taitPressure7(rho, s.c.cteb, s.c.ovrhop0), 1.f / rho};
     }
+    formExtents(s);
+    return s;
+}
+
+/// The blocks' row extents: both blocks' (the host's), the boundary block's and the fluid
+/// block's (formed as the GPU forms them).
+void formExtents(Layout& s) {
     s.ext.assign(6 * std::size_t(rowExtentStride(s.g)), 0.f);
     s.bound_ext = s.ext;
     s.fluid_ext = s.ext;
@@ -116,7 +125,6 @@ Layout makeLayout(int dim, bool lattice, std::mt19937& rng) {
             e.join(rowExtentShare(r, lane, 32u, s.g, s.cs_fluid.data(), nullptr, s.poscell.data()));
         storeRowExtent(r, s.g, e, s.fluid_ext.data());
     }
-    return s;
 }
 
 bool sameBits(float a, float b) { return floatBitsToUint(a) == floatBitsToUint(b); }
@@ -320,6 +328,83 @@ TEST(RowExtents, ForceSumsKeepTheirBitsWithPairLanes) {
     checkForces<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 2>>(34);
     checkForces<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 3>>(35);
     checkForces<FluidOptions<CubicKernel, Viscosity::Laminar, DensityDiffusion::Molteni, 3>>(36);
+}
+
+/// Every 7th fluid particle of a random layout removed from the run in its slot
+/// (physics::removedPosCell: NaN offsets, its cell kept), against the same blocks with those
+/// particles taken out: every other particle's sums keep their bits (one pair lane, so that the
+/// candidates' lanes do not shift), on the host's path and the GPU's (direct and masked, both
+/// blocks through their extents), for fluid and boundary particles; a removed particle's own sums
+/// are zero.
+template <class Opt>
+void checkRemoved(std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    const Layout s = makeLayout(Opt::dim, false, rng);
+    const std::uint32_t n = s.nb + s.nf;
+    Layout in = s, out = s;
+    std::vector<std::uint32_t> at(n, ~0u);  // index in `out`
+    out.poscell.clear();
+    out.velrho.clear();
+    out.press_ovrho.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (i >= s.nb && (i - s.nb) % 7 == 0) {
+            in.poscell[i] = removedPosCell(s.poscell[i].w);
+            continue;
+        }
+        at[i] = std::uint32_t(out.poscell.size());
+        out.poscell.push_back(s.poscell[i]);
+        out.velrho.push_back(s.velrho[i]);
+        out.press_ovrho.push_back(s.press_ovrho[i]);
+    }
+    out.nf = std::uint32_t(out.poscell.size()) - s.nb;
+    for (std::uint32_t& start : out.cs_fluid) {  // kept particles before each cell's start
+        const std::uint32_t removed_before = (start - s.nb + 6u) / 7u;
+        start -= removed_before;
+    }
+    formExtents(in);
+    formExtents(out);
+    const InteractionInputs a = in.inputs(true), b = out.inputs(true);
+    auto fields = [](const FluidAccum& x) { return std::vector<float>{x.ax, x.ay, x.az, x.ar, x.visc}; };
+    auto gpuPath = [&](std::uint32_t i, const InteractionInputs& inp, bool masked) {
+        FluidAccum acc = masked ? fluidLanePartial<Opt, true, true>(i, 0, 1, inp, s.c, s.g)
+                                : fluidLanePartial<Opt, false, true>(i, 0, 1, inp, s.c, s.g);
+        finishFluidAccum<Opt>(acc);
+        return fields(acc);
+    };
+    int compared = 0;
+    for (std::uint32_t i = s.nb; i < n; ++i) {
+        const std::vector<float> host = fields(fluidParticleForces<Opt, true>(i, a, s.c, s.g, 1));
+        if (at[i] == ~0u) {  // removed: no sums of its own
+            for (const std::vector<float>& f : {host, gpuPath(i, a, false), gpuPath(i, a, true)})
+                for (float v : f) ASSERT_TRUE(sameBits(v, 0.f)) << "removed particle " << i;
+            continue;
+        }
+        const std::vector<float> host_out = fields(fluidParticleForces<Opt, true>(at[i], b, s.c, s.g, 1));
+        const std::vector<float> gpu = gpuPath(i, a, false), gpu_out = gpuPath(at[i], b, false);
+        const std::vector<float> gpu_m = gpuPath(i, a, true), gpu_m_out = gpuPath(at[i], b, true);
+        for (int k = 0; k < 5; ++k) {
+            ASSERT_TRUE(sameBits(host[k], host_out[k])) << "host path, particle " << i << ", field " << k;
+            ASSERT_TRUE(sameBits(gpu[k], gpu_out[k])) << "GPU path, particle " << i << ", field " << k;
+            ASSERT_TRUE(sameBits(gpu_m[k], gpu_m_out[k])) << "GPU path, masked, particle " << i << ", field " << k;
+        }
+        compared += host[4] > 0.f ? 1 : 0;  // (a particle with neighbours: its viscous dt measure)
+    }
+    EXPECT_GT(compared, int(s.nf) / 2) << "particles with neighbours compared";
+    for (std::uint32_t i = 0; i < s.nb; ++i) {
+        float ar1, visc1, ar2, visc2, ar3, visc3, ar4, visc4;
+        boundParticleForces<Opt, true>(i, a, s.c, s.g, ar1, visc1);
+        boundParticleForces<Opt, true>(i, b, s.c, s.g, ar2, visc2);
+        boundParticleForces<Opt, false, true>(i, a, s.c, s.g, ar3, visc3);  // the GPU's, fluid extents
+        boundParticleForces<Opt, false, true>(i, b, s.c, s.g, ar4, visc4);
+        ASSERT_TRUE(sameBits(ar1, ar2) && sameBits(visc1, visc2)) << "boundary particle " << i;
+        ASSERT_TRUE(sameBits(ar3, ar4) && sameBits(visc3, visc4)) << "GPU path, boundary particle " << i;
+    }
+}
+
+TEST(RowExtents, AParticleRemovedInItsSlotIsNoOnesNeighbour) {
+    checkRemoved<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 2>>(37);
+    checkRemoved<FluidOptions<WendlandKernel, Viscosity::Artificial, DensityDiffusion::FourtakasFull, 3>>(38);
+    checkRemoved<FluidOptions<CubicKernel, Viscosity::Laminar, DensityDiffusion::Molteni, 3>>(39);
 }
 
 // The GPU's extents pass indexes rows x 32 threads with 32 bits: a grid with more rows is refused
