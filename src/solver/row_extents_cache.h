@@ -62,7 +62,7 @@ struct RowExtentsCache {
     }
     /// The pass that fills fluidExtents' memory from the fluid block (cell starts `cs_fluid`).
     RowExtentsPass fluidPass(const physics::CellGrid& g, const std::uint32_t* cs_fluid,
-                                 const physics::Float4* poscell) {
+                             const physics::Float4* poscell) {
         return RowExtentsPass{g, cs_fluid, nullptr, poscell, fluid.data(), kRowLanes};
     }
 
