@@ -175,7 +175,8 @@ SEASPRING_HD inline std::uint64_t sortKey(std::uint32_t linear_cell, std::uint32
 /// Largest skin, as a fraction of the cell size: one more cell on each side of the search box
 /// covers a particle and its neighbour both up to half a cell outside their cells.
 constexpr double kMaxSkinFraction = 0.5;
-/// The default skin (-skin): measured in docs/performance-large.md.
+/// The default skin (-skin) of large runs (smaller runs: solver::resolveSkin): measured in
+/// docs/performance-large.md.
 constexpr double kDefaultSkinFraction = 0.05;
 
 /// The cell mode of cells one particle spacing dp wide (-cellmode:dp); modes 1..4 are cells of

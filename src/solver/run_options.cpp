@@ -402,9 +402,11 @@ Run control:
                        in 2D; or the next coarser mode if the grid would exceed 16
                        cells per particle + 2^20 or a 32-bit packed cell
   -skin:F              skin of the neighbour cells, a fraction 0 <= F <= 0.5 of the cell
-                       size (default 0.05): particles keep their cell while they stay
-                       within F cells of it, and the particles are sorted again only
-                       when one leaves (or is excluded); the search reaches F further.
+                       size (default 0.25 for cases of fewer than 262,144 particles,
+                       else 0.05): particles keep their cell while they stay within F
+                       cells of it, and the particles are sorted again only when one
+                       leaves (an excluded particle leaves the run in its slot until
+                       then); the search reaches F further.
                        0: sorted twice per step, as DualSPHysics. Results depend on it
                        at rounding level (the neighbour order), so hashes compare runs
                        of the same skin

@@ -45,7 +45,7 @@ struct RunOptions {
     /// dp, cells of one particle spacing; 0 auto (resolveCellDiv).
     int cell_div = 0;
     /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
-    /// at every divide); unset: kDefaultSkinFraction (physics/cell_grid.h).
+    /// at every divide); unset: by the case's size (resolveSkin, solver/simulation.h).
     std::optional<double> skin;
     /// -pairlanes:N: pair lanes of the fluid loop, a power of two 1..physics::kMaxPairLanes
     /// (physics/fluid_interaction.h); 0 (auto): resolvePairLanes.

@@ -87,7 +87,10 @@ std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes) {
     return lanes;
 }
 
-double resolveSkin(const RunOptions& o) { return o.skin.value_or(physics::kDefaultSkinFraction); }
+double resolveSkin(const SolverCase& c, const RunOptions& o) {
+    if (o.skin) return *o.skin;
+    return c.particles.size() < kSmallRunParticles ? kSmallRunSkinFraction : physics::kDefaultSkinFraction;
+}
 
 static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
     const ParticleSet& ps = c.particles;
@@ -230,7 +233,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
-    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(o), o.pair_lanes);
+    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(c, o), o.pair_lanes);
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
@@ -256,7 +259,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
     sum_.options =
-        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(o), setup_.pair_lanes);
+        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(c, o), setup_.pair_lanes);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (setup_.grid_centred) {

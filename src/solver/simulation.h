@@ -79,8 +79,21 @@ constexpr std::uint32_t kAutoPairLanesMax = 4;
 /// docs/performance-small.md): 4 lanes were the fastest or within 1.5% of it from 13,860 to 39,312
 /// fluid particles; at 115,920 two lanes were 2% slower than one, at 652,212 12% slower.
 std::uint32_t resolvePairLanes(const SolverCase& c, int pair_lanes);
-/// The skin a run uses: -skin, else physics::kDefaultSkinFraction.
-double resolveSkin(const RunOptions& o);
+/// Particles below which a run's default skin is kSmallRunSkinFraction (resolveSkin).
+constexpr std::uint64_t kSmallRunParticles = 262144;
+/// The default skin of runs of fewer than kSmallRunParticles particles.
+constexpr double kSmallRunSkinFraction = 0.25;
+/// The skin a run uses: -skin, else kSmallRunSkinFraction for a case of fewer than
+/// kSmallRunParticles particles, else physics::kDefaultSkinFraction. A small run's step is
+/// bound by launch latency, and a sort is a dozen launches and a wait, while the candidates
+/// that a wider skin adds cost little there; a large run's pair loop pays for every candidate.
+/// NVIDIA H200, first 0.1 s (0.3 s, 0.5 s), skin 0.25 against 0.05: the Antoci gate 2D
+/// (17,384 particles) 0.855, FlexStruc Liao 2D (27,956) 0.840, DualSPHysics' 2D and 3D dam
+/// breaks as shipped 0.738 and 0.899 (171 k); larger runs lost with it (the 3D sluice gate at
+/// dp 4 mm, 342 k, 1.04 over 1 s; FlexStruc Liao 3D, 2.6 M, 1.03 at 0.2;
+/// docs/performance-large.md, twenty-ninth and thirtieth sessions). The CPU (2 threads) within
+/// its spread either way.
+double resolveSkin(const SolverCase& c, const RunOptions& o);
 /// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) in 3D 4
 /// where h >= 2 dp (cells of h/2 at least dp wide; on an H100, SPHERIC Test 2 at 4.4 M
 /// particles, h = 2 dp, runs 13% faster than with cells of h), physics::kCellDivSpacing (cells

@@ -160,10 +160,10 @@ TYPED_TEST(BackendOutflow, ExcludedParticlesLeaveTheRunInTheirSlotsAsIfSortedOut
     for (std::size_t i = 0; i < x.pos.size(); ++i)
         worst = std::max({worst, std::fabs(x.pos[i].x - z.pos[i].x), std::fabs(x.pos[i].z - z.pos[i].z)});
     EXPECT_LT(worst, 1e-6) << "the largest position difference from the run sorted at every divide [m]";
-    std::printf("outflow: %u of %u fluid particles left, %d removals without a sort, %u sorts of %u divides; "
+    std::printf("outflow: %u of %u fluid particles left, %d removals without a sort, %llu sorts of %llu divides; "
                 "largest position difference from sorting at every divide %.3g m, dt maxima %.3g\n",
-                nfluid - active, nfluid, removed_without_sort, ref->divideCounts().sorts,
-                ref->divideCounts().divides, worst, worst_maxima);
+                nfluid - active, nfluid, removed_without_sort, (unsigned long long)ref->divideCounts().sorts,
+                (unsigned long long)ref->divideCounts().divides, worst, worst_maxima);
 }
 
 }  // namespace

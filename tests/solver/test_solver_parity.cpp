@@ -214,6 +214,29 @@ TEST(SolverParity, AutoCellModeFollowsDimensionAndGridSize) {
     EXPECT_LE(double(g.cellCount()), 16.0 * double(wide.particles.size()) + 1048576.0);
 }
 
+// The default skin follows the case's size (resolveSkin): 0.25 of a cell below 262,144
+// particles, 0.05 from there; -skin wins over both; the run's physics line says which.
+TEST(SolverParity, DefaultSkinFollowsTheCaseSize) {
+    const std::string dir = scratch("autoskin");
+    const auto r = test::runCpu(test::generateCase(dir, "tank", tank2d(kVariants[0].params)), dir + "/o", 1,
+                                [](solver::RunOptions& o) { o.nsteps = 1; });
+    solver::RunOptions o;
+    ASSERT_LT(r.kase.particles.size(), solver::kSmallRunParticles);
+    EXPECT_EQ(solver::resolveSkin(r.kase, o), solver::kSmallRunSkinFraction);
+    EXPECT_EQ(solver::kSmallRunSkinFraction, 0.25);
+    EXPECT_NE(r.summary.options.find("with a skin of 0.25 cell"), std::string::npos) << r.summary.options;
+    solver::SolverCase large = r.kase;
+    large.particles.resize(solver::kSmallRunParticles);  // only the count is read
+    EXPECT_EQ(solver::resolveSkin(large, o), physics::kDefaultSkinFraction);
+    large.particles.resize(solver::kSmallRunParticles - 1);
+    EXPECT_EQ(solver::resolveSkin(large, o), solver::kSmallRunSkinFraction);
+    for (double f : {0.0, 0.05, 0.4}) {
+        o.skin = f;
+        EXPECT_EQ(solver::resolveSkin(r.kase, o), f);
+        EXPECT_EQ(solver::resolveSkin(large, o), f);
+    }
+}
+
 // DtAllParticles = 1: a piston moving at 5 m/s (10 |v| = 50 m/s above c0 = 28 m/s) limits the
 // time step to CFL h / (10 |v|); with 0 only the fluid's velocities count.
 TEST(SolverParity, DtAllParticlesLetsMovingWallsLimitTheTimeStep) {
