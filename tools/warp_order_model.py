@@ -14,7 +14,10 @@ a row costs CR when any thread of the warp visits it. A warp's row costs its thr
 
 Mappings compared: warps of 32 consecutive particles (what runs now), and the particles of each
 segment of S consecutive ones grouped by their offset inside their cell (BINS per axis) before
-being cut into warps. Usage: /usr/bin/python3 tools/warp_order_model.py [AMP]
+being cut into warps. Last, the same warps with a ring of found pairs per thread (the thirtieth
+session's queue: modelled 0.76 of the masked walk after the impacts, 1.02 on the lattice;
+measured 1.34 and 1.22: the ring's bookkeeping cost twice the 16 instructions a pair assumed and
+the lanes rose far less). Usage: /usr/bin/python3 tools/warp_order_model.py [AMP]
 """
 import sys
 
@@ -96,6 +99,33 @@ def main():
                 warps += [part[i:i + 32] for i in range(0, seg, 32)]
             print("segments of %d grouped by offset (%d bins per axis): efficiency %.3f, cost per particle %.0f"
                   % ((seg, bins) + efficiency(warps)))
+
+    def ring(warps, cap, keep, extra):
+        """A ring of `cap` found neighbours per thread (thirtieth session, physics code not kept): rows
+        walked in step; at each row's end the warp evaluates the least count its threads hold (at
+        least one pair when any thread holds more than `keep`), each pair `extra` instructions dearer;
+        a row that would overflow a ring first drains what the fullest thread needs."""
+        warp_cost = work = 0
+        for w in warps:
+            c = 32 * (CT * cand[w].max(0).sum() + CR * visits[w].any(0).sum())
+            n = np.zeros(len(w), int)
+            for k in range(nb.shape[1]):
+                add = nb[w, k]
+                if (n + add > cap).any():
+                    p = (n + add - cap).max()
+                    c += 32 * (CP + extra) * p
+                    n = np.maximum(n - p, 0)
+                n += add
+                if n.max() >= keep:
+                    p = max(1, n.min())
+                    c += 32 * (CP + extra) * p
+                    n = np.maximum(n - p, 0)
+            warp_cost += c + 32 * (CP + extra) * n.max()
+            work += CT * cand[w].sum() + CP * nb[w].sum() + CR * visits[w].sum()
+        return work / warp_cost, warp_cost / len(warps) / 32
+
+    print("a ring of 32 found pairs per thread (24 kept), 16 instructions more a pair: efficiency %.3f, "
+          "cost per particle %.0f" % ring(consecutive, 32, 24, 16))
 
 
 if __name__ == "__main__":
