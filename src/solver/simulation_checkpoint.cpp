@@ -44,6 +44,15 @@ std::string cellModeOf(const std::string& options) {
     return "";
 }
 
+/// The -skin value of an option line's "with a skin of F cell" (describePhysics), "0" without one.
+std::string skinOf(const std::string& options) {
+    const std::string key = "with a skin of ";
+    const std::size_t at = options.find(key);
+    if (at == std::string::npos) return "0";
+    const std::size_t b = at + key.size(), e = options.find(' ', b);
+    return options.substr(b, e == std::string::npos ? std::string::npos : e - b);
+}
+
 }  // namespace
 
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir) {
@@ -104,10 +113,13 @@ Simulation::LoopState Simulation::resume(TimeStepper& stepper, StepContext& ctx)
         throw Error(d.source + ": restart file of case '" + d.text("loop/case") + "', this run is case '" + case_.name +
                     "'");
     if (d.text("loop/options") != sum_.options) {
-        // The cell mode is the one an option line may differ in without any option given: the
-        // default changed (cells of dp where 1.5 dp < h < 2 dp, twenty-first session).
+        // The cell mode and the skin are what an option line may differ in without any option
+        // given: their defaults changed (cells of dp where 1.5 dp < h < 2 dp, twenty-first
+        // session; a skin of 0.25 below 262,144 particles, thirtieth session).
         const std::string was = cellModeOf(d.text("loop/options")), now = cellModeOf(sum_.options);
-        const std::string hint = !was.empty() && was != now ? "; its cells differ: continue it with -cellmode:" + was : "";
+        std::string hint = !was.empty() && was != now ? "; its cells differ: continue it with -cellmode:" + was : "";
+        const std::string skin_was = skinOf(d.text("loop/options"));
+        if (skin_was != skinOf(sum_.options)) hint += "; its skin differs: continue it with -skin:" + skin_was;
         throw Error(d.source + ": restart file written with the options\n  " + d.text("loop/options") +
                     "\nthis run has\n  " + sum_.options + "\n(a restart continues the same run: give the same options" +
                     hint + ")");

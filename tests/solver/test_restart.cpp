@@ -184,6 +184,19 @@ TEST(Restart, BadRestartsNameTheFile) {
                      "/o5");
     EXPECT_NE(p.status, 0);
     EXPECT_NE(p.out.find("its cells differ: continue it with -cellmode:h)"), std::string::npos) << p.out;
+    EXPECT_EQ(p.out.find("skin differs"), std::string::npos) << p.out;  // the same skin
+    // Another skin (as a file written before the small runs' default skin changed), and none.
+    p = runSeaspring("-cpu " + std::string(kRun) + "-skin:0.05 -restart:" + file + " " + antociCase() + " " + dir +
+                     "/o6");
+    EXPECT_NE(p.status, 0);
+    EXPECT_NE(p.out.find("its skin differs: continue it with -skin:0.25)"), std::string::npos) << p.out;
+    const Program z = runSeaspring("-cpu -threads:1 " + std::string(kRun) + "-skin:0 -checkpoint:0.02 -nsteps:500 " +
+                                   antociCase() + " " + dir + "/cut0");
+    ASSERT_EQ(z.status, 0) << z.out;
+    p = runSeaspring("-cpu " + std::string(kRun) + "-restart:" + dir + "/cut0/restart.h5 " + antociCase() + " " + dir +
+                     "/o7");
+    EXPECT_NE(p.status, 0);
+    EXPECT_NE(p.out.find("its skin differs: continue it with -skin:0)"), std::string::npos) << p.out;
     // Missing, and not a restart file.
     p = runSeaspring("-cpu " + std::string(kRun) + "-restart:" + dir + "/none.h5 " + antociCase() + " " + dir + "/o2");
     EXPECT_NE(p.status, 0);
