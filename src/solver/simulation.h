@@ -91,8 +91,10 @@ constexpr double kSmallRunSkinFraction = 0.25;
 /// (17,384 particles) 0.855, FlexStruc Liao 2D (27,956) 0.840, DualSPHysics' 2D and 3D dam
 /// breaks as shipped 0.738 and 0.899 (171 k); larger runs lost with it (the 3D sluice gate at
 /// dp 4 mm, 342 k, 1.04 over 1 s; FlexStruc Liao 3D, 2.6 M, 1.03 at 0.2;
-/// docs/performance-large.md, twenty-ninth and thirtieth sessions). The CPU (2 threads) within
-/// its spread either way.
+/// docs/performance-large.md, twenty-ninth and thirtieth sessions). The CPU (2 threads): the
+/// 2D cases within their spread, Spheric2Dam_100K (3D, 116,658) 1.02 over its first 0.1 s (its
+/// pair loop pays for the candidates; the skin must not depend on the backend, whose runs
+/// would then differ in their bits).
 double resolveSkin(const SolverCase& c, const RunOptions& o);
 /// The cell division a run uses: `cell_div` (RunOptions), or for 0 (-cellmode:auto) in 3D 4
 /// where h >= 2 dp (cells of h/2 at least dp wide; on an H100, SPHERIC Test 2 at 4.4 M
