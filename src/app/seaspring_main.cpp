@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
             for (const std::string& l : solver::describeCase(c)) log << "  " << l << "\n";
             log << "  physics: "
                 << solver::describePhysics(c.params, c.constants.dimensions, solver::resolveCellDiv(c, opt.cell_div),
-                                           solver::resolveSkin(c, opt), solver::resolvePairLanes(c, opt.pair_lanes))
+                                           solver::resolveSkin(c, opt), solver::resolvePairLanes(c, opt.pair_lanes),
+                                           solver::resolveCellSwitch(c, opt.cell_div, opt.cell_switch))
                 << "\n";
             log << "  backend: " << backend->name() << " (" << backend->deviceName() << ")";
             if (backend->name() == "cpu") log << ", " << backend->threads() << " threads";

@@ -120,6 +120,16 @@ SEASPRING_HD inline std::uint32_t linearCellOf(const CellGrid& g, float w) {
     return g.linear(packedCellX(g, w), packedCellY(g, w), packedCellZ(g, w));
 }
 
+/// Whether a particle of a sorted block shares its cell with another particle of that block
+/// (`cell_start`: the block's cell ranges; the particle's cell from its PosCell). A fluid on its
+/// initial lattice in cells of one spacing centred on it (solver/grid_origin.h) has one particle
+/// per cell and none shares; a disordered fluid packs some cells with two or more. The rule of
+/// the cells' switch (solver/cell_switch.h), read right after a sort.
+SEASPRING_HD inline bool sharesItsCell(const Float4& poscell, const std::uint32_t* cell_start, const CellGrid& g) {
+    const std::uint32_t c = linearCellOf(g, poscell.w);
+    return cell_start[c + 1u] - cell_start[c] >= 2u;
+}
+
 /// Scalar forms of the lane operations that cellGap and rowSpan are written with (the host's
 /// row table evaluates them on eight rows at once with core/simd8.h's: the same operations).
 /// float(x), exact for a cell difference.

@@ -40,6 +40,18 @@ struct MdbcSetup {
     std::uint32_t with_normal = 0;         ///< particles with a ghost vector
 };
 
+/// The switch of a 3D run's cells of one particle spacing, centred on the fluid's lattice, to
+/// cells of h once its fluid has left that lattice (solver/cell_switch.h): at the first fluid
+/// sort after which more than `fraction` of the active fluid shares its cell with another fluid
+/// particle (physics::sharesItsCell), the engine takes `grid` and sorts both blocks into it. The rule
+/// reads the state only (an integer count of the sorted PosCells), so every backend and thread
+/// count switches at the same divide.
+struct CellSwitch {
+    bool on = false;
+    double fraction = 1.0;
+    physics::CellGrid grid;  ///< the cells of h (the run's skin in its cells)
+};
+
 /// Initial data, particles in id order: [0, nbound) boundary (fixed, moving, then VCPM solid
 /// particles, which the fluid sees as DBC boundary particles), then fluid.
 struct BackendSetup {
@@ -62,6 +74,7 @@ struct BackendSetup {
     /// two <= physics::kMaxPairLanes.
     std::uint32_t pair_lanes = 1;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
+    CellSwitch cell_switch;                       ///< cells of h once the fluid is disordered (off: never)
 };
 
 /// State copied back to the host, in id order: the particle fields flagged physics::kHost or
@@ -78,16 +91,26 @@ struct HostState : HostParticles {
     std::vector<double> contact_work;            ///< ledger: work of the contact force on the solid [J]
 };
 
+/// The search column of a maxz gauge: the fluid cells of the box [lo, hi] (clamped to the grid,
+/// grown by one cell with a skin), searched for the highest particle within sqrt(r2) of the
+/// vertical line through (lx, ly) (2D: x only).
+struct MaxzColumn {
+    physics::Double3 lo, hi;
+    double lx = 0, ly = 0, r2 = 0;
+};
+
 /// What the gauges measure (solver/gauge_system.h), set once per run: gauge points do not move.
+/// Given as positions, which the backend places on its cell grid (gauge_arrays.h: again when
+/// its cells change, CellSwitch).
 struct GaugeQueries {
-    std::vector<physics::Float4> points;       ///< PosCell of each kernel-sum point
-    std::vector<physics::MaxzRow> maxz_rows;   ///< rows of cells of the maxz gauges
+    std::vector<physics::Double3> points;      ///< kernel-sum points (2D: on the particles' plane)
+    std::vector<MaxzColumn> columns;           ///< the maxz gauges' columns
     std::vector<std::uint32_t> ids;            ///< boundary or solid particles whose position is wanted
 };
 /// Their answers for the current state, in query order.
 struct GaugeResults {
     std::vector<physics::GaugeSample> samples;
-    std::vector<double> maxz;
+    std::vector<double> maxz;                  ///< per column
     std::vector<physics::Double3> positions;
 };
 
@@ -110,6 +133,11 @@ struct DivideCounts {
     std::uint64_t boundary_sorts = 0;
     /// Block sorts that kept the stayers' order and merged the movers in (solver/particle_sort.h).
     std::uint64_t merged_sorts = 0;
+    /// The divide at which the cells switched to CellSwitch's (0: they did not).
+    std::uint64_t cell_switch_divide = 0;
+    /// The fluid particles that shared their cells at the sort that switched, and the active
+    /// fluid then (physics::sharesItsCell).
+    std::uint64_t cell_switch_shared = 0, cell_switch_fluid = 0;
 };
 
 class Backend {

@@ -77,11 +77,8 @@ public:
         assignFrom(p_.velrho, s.velrho);
         assignFrom(p_.excl, std::vector<std::uint8_t>(np, physics::kActive));
         assignFrom(p_.velrho_pre, s.velrho);
-        const std::size_t nc = std::size_t(s.grid.cellCount());
-        cs_bound_.resize(nc + 1);
-        cs_fluid_.resize(nc + 1);
-        assignFrom(near_, std::vector<std::uint8_t>(nc, 0));
-        near_tmp_.resize(nc);
+        grid_initial_ = s.grid;
+        useCells(false);
         assignFrom(moving_pos0_, s.moving_pos0);
         assignFrom(moving_object_, s.moving_object);
         motions_.resize(s.motion_objects > 0 ? s.motion_objects : 1);
@@ -225,7 +222,7 @@ public:
         for (std::uint32_t i = 0; i < nbound_; ++i) out[ids[i]] = sorted[i];
     }
 
-    void setGauges(const GaugeQueries& q) override { gauges_.set(q, nbound_); }
+    void setGauges(const GaugeQueries& q) override { gauges_.set(q, nbound_, setup_.grid, setup_.physics.dim); }
     void gauges(GaugeResults& out) override {
         settleDivide();
         gauges_.answer(exec_, setup_, cs_fluid_.data(), p_.view(), nbound_, out);
@@ -298,6 +295,45 @@ private:
         // values); an unsorted block of moving particles keeps what its skin test refreshed.
         const std::uint32_t b = movers && !bound ? nbound_ : 0u, e = fluid ? nbound_ + nfluid_ : nbound_;
         if (e > b) exec_.template forEach<LaunchDefault>(b, e, PosCellPass{p_.view(), setup_.grid});
+        if (fluid) switchCellsIfDue(pre);
+    }
+
+    /// The cells' switch (BackendSetup::cell_switch, solver/cell_switch.h): after a sort of the
+    /// fluid block in the run's first cells, the fluid particles that share their cell with
+    /// another are counted (an integer sum: the same on every backend); above the switch's
+    /// fraction of the active fluid, both blocks are sorted into the cells of h (the fixed walls
+    /// too), their PosCells, cell ranges, near flags, row extents and the gauges' cells follow.
+    void switchCellsIfDue(bool pre) {
+        const CellSwitch& sw = setup_.cell_switch;
+        if (!sw.on || cells_switched_ || nfluid_ == 0u) return;
+        const std::uint32_t off = exec_.reduce(nbound_, nbound_ + nfluid_, 0u,
+                                               SharedCellCountPass{p_.poscell.data(), cs_fluid_.data(), setup_.grid},
+                                               CountCombine{});
+        if (!(double(off) > sw.fraction * double(nfluid_))) return;
+        counts_.cell_switch_divide = counts_.divides;
+        counts_.cell_switch_shared = off;
+        counts_.cell_switch_fluid = nfluid_;
+        useCells(true);
+        sortRange(0, nbound_, cs_bound_, pre);
+        nearFlags(cs_bound_, physics::kNearBound);
+        updateSolidSlots();
+        nfluid_ = sortRange(nbound_, nbound_ + nfluid_, cs_fluid_, pre) - nbound_;
+        removed_ = 0u;
+        nearFlags(cs_fluid_, physics::kNearFluid);
+        exec_.template forEach<LaunchDefault>(0u, nbound_ + nfluid_, PosCellPass{p_.view(), setup_.grid});
+    }
+    /// The run's first cells, or (`switched`) the switch's: the grid and the memory sized by it
+    /// (cell ranges, near flags; the row extents and the gauges' cells again at their next use).
+    void useCells(bool switched) {
+        cells_switched_ = switched;
+        setup_.grid = switched ? setup_.cell_switch.grid : grid_initial_;
+        const std::size_t nc = std::size_t(setup_.grid.cellCount());
+        cs_bound_.resize(nc + 1);
+        cs_fluid_.resize(nc + 1);
+        assignFrom(near_, std::vector<std::uint8_t>(nc, 0));
+        near_tmp_.resize(nc);
+        row_ext_.bound_done = false;
+        gauges_.regrid(setup_.grid);
     }
 
     /// A force evaluation launched by divideThenForces, not yet taken by computeForces. `gated`:
@@ -499,6 +535,8 @@ private:
     std::uint32_t nbound_ = 0, nfluid_ = 0;
     std::uint32_t sort_merge_min_ = kMergeMinParticles;  ///< sortBlockRange merges from this block size
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)
+    bool cells_switched_ = false;     ///< the grid is BackendSetup::cell_switch's (useCells)
+    physics::CellGrid grid_initial_;  ///< the run's first grid (init's)
     DivideCounts counts_;
     ParticleStore<Exec::template Buffer> p_;
     Buf<std::uint32_t> cs_bound_, cs_fluid_;

@@ -38,6 +38,10 @@ void Engine<Exec>::saveState(CheckpointData& out) {
     out.ints["engine/sorts"] = (long long)counts_.sorts;
     out.ints["engine/boundary_sorts"] = (long long)counts_.boundary_sorts;
     out.ints["engine/merged_sorts"] = (long long)counts_.merged_sorts;
+    out.ints["engine/cells_switched"] = cells_switched_ ? 1 : 0;
+    out.ints["engine/cell_switch_divide"] = (long long)counts_.cell_switch_divide;
+    out.ints["engine/cell_switch_shared"] = (long long)counts_.cell_switch_shared;
+    out.ints["engine/cell_switch_fluid"] = (long long)counts_.cell_switch_fluid;
 }
 
 template <class Exec>
@@ -51,6 +55,13 @@ void Engine<Exec>::loadState(const CheckpointData& in) {
             throw Error(in.source + ": restart file was written for another case or set-up (" + name + " " +
                         std::to_string(got) + ", this run has " + std::to_string(want) + ")");
     };
+    // The cells the file's arrays are sorted into (files written before the switch existed: the
+    // first ones).
+    const bool switched = in.has("engine/cells_switched") && in.integer("engine/cells_switched") != 0;
+    if (switched && !setup_.cell_switch.on)
+        throw Error(in.source + ": restart file written after its run's cells switched to cells of h, and this "
+                                "run has no such switch (a restart continues the same run: give the same options)");
+    if (switched != cells_switched_) useCells(switched);
     expect("np", (long long)(setup_.nbound) + setup_.nfluid);
     expect("nbound", nbound_);
     expect("nsolid", solid_.n);
@@ -80,6 +91,13 @@ void Engine<Exec>::loadState(const CheckpointData& in) {
     counts_.boundary_sorts =
         in.has("engine/boundary_sorts") ? (unsigned long long)in.integer("engine/boundary_sorts") : 0ull;
     counts_.merged_sorts = in.has("engine/merged_sorts") ? (unsigned long long)in.integer("engine/merged_sorts") : 0ull;
+    auto count = [&](const char* name) {
+        const std::string key = std::string("engine/") + name;
+        return in.has(key) ? (unsigned long long)in.integer(key) : 0ull;
+    };
+    counts_.cell_switch_divide = count("cell_switch_divide");
+    counts_.cell_switch_shared = count("cell_switch_shared");
+    counts_.cell_switch_fluid = count("cell_switch_fluid");
 }
 
 }  // namespace seaspring::solver

@@ -70,7 +70,7 @@ struct GaugeSystem::Item {
     std::FILE* file = nullptr;
 };
 
-GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log,
+GaugeSystem::GaugeSystem(const SolverCase& c, const std::string& outdir, std::ostream& log,
                          const CheckpointData* resume)
     : massfluid_(c.constants.massfluid), dim_(c.constants.dimensions), domain_minz_(c.domain_min.z) {
     // A restart file of this case has as many gauges, in the same order (its keys are
@@ -80,19 +80,17 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
                     " gauges, the case " + std::to_string(c.gauges.gauges.size()));
     const model::GaugeSet& set = c.gauges;
     const double tout = c.params.time_out;
-    const physics::CellGrid& g = s.grid;
     auto fail = [&](const GaugeSpec& sp, const std::string& msg) {
         throwInputError(c.xml_path, sp.line, "<" + std::string(model::gaugeElementName(sp.kind)) + " name=\"" +
                                                  sp.name + "\">: " + msg);
     };
-    // A point's PosCell; 2D points are moved onto the particles' plane. Points outside the
-    // domain measure nothing (zero sums), as DualSPHysics.
+    // A point (the backend places it in its cells, gauge_arrays.h); 2D points are moved onto the
+    // particles' plane. Points outside the domain measure nothing (zero sums), as DualSPHysics.
     auto addPoint = [&](const Vec3d& p) {
         physics::Double3 d{p.x, dim_ == 2 ? c.domain_min.y : p.y, p.z};
         const bool inside = d.x >= c.domain_min.x && d.x <= c.domain_max.x && d.z >= c.domain_min.z &&
                             d.z <= c.domain_max.z && (dim_ == 2 || (d.y >= c.domain_min.y && d.y <= c.domain_max.y));
-        std::uint32_t cell;
-        q_.points.push_back(physics::makePosCell(g, d, cell));  // clamped cell: reads stay in the grid
+        q_.points.push_back(d);
         outside_.push_back(!inside);
     };
     bool any_output = false;
@@ -136,21 +134,13 @@ GaugeSystem::GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::
                 break;
             }
             case GaugeKind::MaxZ: {
-                // The cells (clamped to the grid) of the box around the column, reach r.
+                // The box around the column, reach r (the backend searches its cells, gauge_arrays.h).
                 const double r = sp.distlimit;
-                int x0, y0, z0, x1, y1, z1;
-                physics::cellOf(g, physics::Double3{sp.point0.x - r, sp.point0.y - r, sp.point0.z - r}, x0, y0, z0);
-                physics::cellOf(g, physics::Double3{sp.point0.x + r, sp.point0.y + r, sp.point0.z + sp.height + r}, x1, y1, z1);
-                if (g.skinf > 0.f) {  // a particle may lie up to the skin (< 1 cell) outside its cell
-                    x0 = std::max(x0 - 1, 0), y0 = std::max(y0 - 1, 0), z0 = std::max(z0 - 1, 0);
-                    x1 = std::min(x1 + 1, g.ncx - 1), y1 = std::min(y1 + 1, g.ncy - 1), z1 = std::min(z1 + 1, g.ncz - 1);
-                }
-                if (dim_ == 2) y0 = y1 = 0;
-                item.first = std::uint32_t(q_.maxz_rows.size());
-                for (int z = z0; z <= z1; ++z)
-                    for (int y = y0; y <= y1; ++y)
-                        q_.maxz_rows.push_back(physics::MaxzRow{g.linear(0, y, z), x0, x1, sp.point0.x, sp.point0.y, r * r});
-                item.count = std::uint32_t(q_.maxz_rows.size()) - item.first;
+                item.first = std::uint32_t(q_.columns.size());
+                item.count = 1;
+                q_.columns.push_back(MaxzColumn{physics::Double3{sp.point0.x - r, sp.point0.y - r, sp.point0.z - r},
+                                                physics::Double3{sp.point0.x + r, sp.point0.y + r, sp.point0.z + sp.height + r},
+                                                sp.point0.x, sp.point0.y, r * r});
                 break;
             }
             case GaugeKind::Force: {

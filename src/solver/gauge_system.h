@@ -1,7 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file gauge_system.h
 /// \brief The case's gauges during a run: when each one measures (computedt, computetime),
-///        what the backend is asked (kernel sums at points, maxz rows, particle positions,
+///        what the backend is asked (kernel sums at points, maxz columns, particle positions,
 ///        boundary forces) and the CSV files OUTDIR/gauges/Gauges<Kind>_<name>.csv
 ///        (';'-separated, one header line, DualSPHysics' column names).
 ///
@@ -24,12 +24,12 @@ namespace seaspring::solver {
 
 class GaugeSystem {
 public:
-    /// Resolves every gauge of `c.gauges` (points, rows, marker particles, force blocks);
+    /// Resolves every gauge of `c.gauges` (points, maxz columns, marker particles, force blocks);
     /// throws seaspring::Error naming the resolved case file and line for a bad target.
     /// `resume`: a restart file's data: the gauges continue its timing, and their CSV files in
     /// OUTDIR are cut back to what they held at the checkpoint and continued (new files when
     /// they are not there).
-    GaugeSystem(const SolverCase& c, const BackendSetup& s, const std::string& outdir, std::ostream& log,
+    GaugeSystem(const SolverCase& c, const std::string& outdir, std::ostream& log,
                 const CheckpointData* resume = nullptr);
     ~GaugeSystem();
     GaugeSystem(const GaugeSystem&) = delete;

@@ -229,6 +229,18 @@ struct RemovedCountPass {
     SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const { return physics::removedFromRun(poscell[i]) ? 1u : 0u; }
 };
 
+/// Value pass of the count of fluid particles that share their cell with another fluid particle
+/// (combined with CountCombine; physics::sharesItsCell), right after a sort of the fluid block:
+/// the cells' switch rule (solver/cell_switch.h).
+struct SharedCellCountPass {
+    const physics::Float4* poscell;
+    const std::uint32_t* cell_start;  ///< the fluid block's
+    physics::CellGrid g;
+    SEASPRING_HD std::uint32_t operator()(std::uint32_t i) const {
+        return physics::sharesItsCell(poscell[i], cell_start, g) ? 1u : 0u;
+    }
+};
+
 /// Value pass of the blow-up scan's count (combined with CountCombine): 1 for a particle
 /// physics::particleNotFinite rejects.
 struct NotFiniteCountPass {

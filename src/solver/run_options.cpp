@@ -120,6 +120,7 @@ void declareOptions(CLI::App& app) {
     value("--partbegin")->excludes(restart);
     value("--cellmode");
     value("--skin");
+    value("--cellswitch");
     value("--pairlanes");
     value("--vcpmsubsteps");
     value("--vcpmcoupling");
@@ -268,6 +269,11 @@ void readValues(const std::map<std::string, Given>& given, RunOptions& o) {
             if (*o.skin > physics::kMaxSkinFraction)
                 usageError(g.arg + ": " + g.value + " is larger than 0.5" +
                            " (the skin is a fraction of the cell size)");
+        } else if (name == "cellswitch") {
+            o.cell_switch = toDouble(g, Range::NonNegative);
+            if (o.cell_switch > 1.0)
+                usageError(g.arg + ": " + g.value + " is larger than 1 (the share of the fluid in cells it shares; " +
+                           "0: never switch)");
         } else if (name == "pairlanes") {
             o.pair_lanes = int(toInteger(g, 0, physics::kMaxPairLanes, " (pair lanes: 1, 2, 4 or 8; 0: auto)"));
             if ((o.pair_lanes & (o.pair_lanes - 1)) != 0)
@@ -410,6 +416,14 @@ Run control:
                        0: sorted twice per step, as DualSPHysics. Results depend on it
                        at rounding level (the neighbour order), so hashes compare runs
                        of the same skin
+  -cellswitch:F        a 3D run whose automatic cells are one particle spacing wide and
+                       centred on the fluid's lattice (2h/3 where h = 1.5 dp, dp where
+                       1.5 dp < h < 2 dp) switches to cells of h, once, at the first
+                       sort after which more than F of the fluid shares its cell with
+                       another fluid particle (none does on the lattice): the lattice's
+                       cells test the fewest candidates, cells of h keep more of a
+                       violent flow's pair threads busy. Default 0.3; 0: never.
+                       Results depend on it at rounding level (the neighbour order)
   -pairlanes:N         pair lanes of the fluid loop, 1, 2, 4 or 8: each fluid particle's
                        candidates are split over N partial sums, added pairwise at the
                        end; the GPU runs one thread per lane, so small cases get more

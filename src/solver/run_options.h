@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/cell_switch.h"
 #include "solver/solver_case.h"
 
 namespace seaspring::solver {
@@ -47,6 +48,9 @@ struct RunOptions {
     /// -skin:F: the neighbour cells' skin, a fraction 0 <= F <= 0.5 of the cell size (0: sort
     /// at every divide); unset: by the case's size (resolveSkin, solver/simulation.h).
     std::optional<double> skin;
+    /// -cellswitch:F: a 3D run in cells of one spacing centred on its lattice switches to cells of
+    /// h once more than F of its fluid shares its cells (solver/cell_switch.h); 0: never.
+    double cell_switch = kCellSwitchFraction;
     /// -pairlanes:N: pair lanes of the fluid loop, a power of two 1..physics::kMaxPairLanes
     /// (physics/fluid_interaction.h); 0 (auto): resolvePairLanes.
     int pair_lanes = 0;

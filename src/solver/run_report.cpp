@@ -43,6 +43,8 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("sorts", static_cast<long long>(s.sorts));
     j.value("boundary_sorts", static_cast<long long>(s.boundary_sorts));
     j.value("merged_sorts", static_cast<long long>(s.merged_sorts));
+    if (s.cell_switch_divide > 0) j.value("cell_switch_divide", static_cast<long long>(s.cell_switch_divide));
+    if (s.cell_switch_time >= 0) j.value("cell_switch_time_s", s.cell_switch_time);
     j.value("wall_time_s", s.wall_time);
     j.value("loop_time_s", s.loop_time);
     j.value("ns_per_particle_step", s.ns_per_particle_step);
@@ -139,6 +141,14 @@ void printSummary(std::ostream& os, const RunSummary& s) {
     if (s.nmoving > 0 || s.nsolid > 0) {  // the boundary block is sorted only when its movers need it
         std::snprintf(line, sizeof line, " (the boundary block at %llu)", s.boundary_sorts);
         os << line;
+    }
+    if (s.cell_switch_divide > 0) {  // solver/cell_switch.h
+        std::snprintf(line, sizeof line, "; cells of h from divide %llu", s.cell_switch_divide);
+        os << line;
+        if (s.cell_switch_time >= 0) {
+            std::snprintf(line, sizeof line, " (t=%g s)", s.cell_switch_time);
+            os << line;
+        }
     }
     os << "\n";
     if (s.nsolid > 0) {

@@ -17,6 +17,7 @@
 #include "io/xdmf_series.h"
 #include "physics/eos_tait.h"
 #include "solver/coupling_ledger.h"
+#include "solver/cell_switch.h"
 #include "solver/gauge_system.h"
 #include "solver/grid_origin.h"
 #include "solver/run_limits.h"
@@ -35,7 +36,8 @@ std::string fmt(const char* f, double v) {
 const char* kernelName(int k) { return k == 1 ? "cubic spline" : "Wendland C2"; }
 }  // namespace
 
-std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes) {
+std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin, std::uint32_t pair_lanes,
+                            double cell_switch) {
     std::ostringstream s;
     s << dim << "D, " << (p.step_algorithm == 2 ? "symplectic" : "Verlet");
     if (p.step_algorithm == 1) s << " (Euler every " << p.verlet_steps << ")";
@@ -52,6 +54,7 @@ std::string describePhysics(const SolverParameters& p, int dim, int cell_div, do
     else s << ", DBC";
     s << ", CFL " << p.cfl_number << ", cells of " << cellSizeLabel(cell_div >= 1 && cell_div < kCellModes ? cell_div : 0);
     if (skin > 0) s << " with a skin of " << skin << " cell";
+    if (cell_switch > 0) s << " (h once " << cell_switch << " of the fluid shares them)";
     if (pair_lanes > 1) s << ", " << pair_lanes << " pair lanes";
     return s.str();
 }
@@ -127,8 +130,9 @@ static MdbcSetup makeMdbcSetup(const SolverCase& c, std::uint32_t nbound) {
     return m;
 }
 
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes) {
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes, double cell_switch) {
     using namespace physics;
+    const double switch_fraction = resolveCellSwitch(c, cell_div, cell_switch);
     cell_div = resolveCellDiv(c, cell_div);
     const ParticleSet& ps = c.particles;
     const std::size_t np = ps.size();
@@ -180,6 +184,12 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, in
         throwInputError(c.xml_path, 0, "the simulation domain is too large for the cell grid (" +
                         std::to_string(s.grid.ncx) + " x " + std::to_string(s.grid.ncy) + " x " +
                         std::to_string(s.grid.ncz) + " cells of " + fmt("%g", s.grid.cellsize) + " m)");
+    if (switch_fraction > 0) {  // the cells of h the run switches to (cell_switch.h)
+        const GridOrigin o = latticeCentredGridOrigin(c, cellSizeOfMode(h, dp, 2));
+        s.cell_switch.on = makeCellGrid(o.min[0], o.min[1], o.min[2], c.domain_max.x, c.domain_max.y,
+                                        c.domain_max.z, h, 2, s.cell_switch.grid, skin, dp);
+        s.cell_switch.fraction = switch_fraction;
+    }
     StepConstants& st = s.step;
     st.gx = c.constants.gravity.x;
     st.gy = c.constants.gravity.y;
@@ -233,7 +243,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
     checkRunMemory(c);
-    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(c, o), o.pair_lanes);
+    setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(c, o), o.pair_lanes, o.cell_switch);
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);
     fs::create_directories(opt_.outdir);
@@ -248,7 +258,7 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     if (!setup_.solid.empty())
         ledger_ = std::make_shared<Ledger>(opt_.outdir, cont ? cont->integer("ledger/offset") : -1,
                                            setup_.solid.contact_on);
-    if (!c.gauges.empty()) gauges_ = std::make_shared<GaugeSystem>(c, setup_, opt_.outdir, log_, resume_.get());
+    if (!c.gauges.empty()) gauges_ = std::make_shared<GaugeSystem>(c, opt_.outdir, log_, resume_.get());
     sum_.case_name = c.name;
     sum_.backend = backend_->name();
     sum_.device = backend_->deviceName();
@@ -259,7 +269,8 @@ Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr
     sum_.nsolid = c.nsolid;
     sum_.nfluid = c.nfluid;
     sum_.options =
-        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(c, o), setup_.pair_lanes);
+        describePhysics(c.params, c.constants.dimensions, setup_.grid.cell_div, resolveSkin(c, o), setup_.pair_lanes,
+                        setup_.cell_switch.on ? setup_.cell_switch.fraction : 0.0);
     sum_.bonds = setup_.solid.bonds;
     sum_.clamp_bonds = setup_.solid.clamp_bonds;
     if (setup_.grid_centred) {

@@ -37,6 +37,8 @@ struct RunSummary {
     unsigned long long divides = 0, sorts = 0;  ///< divides, and those that sorted (skin)
     unsigned long long boundary_sorts = 0;      ///< sorts that included the boundary block (movers)
     unsigned long long merged_sorts = 0;        ///< block sorts that merged the movers in (particle_sort.h)
+    unsigned long long cell_switch_divide = 0;  ///< the divide at which the cells switched to h (0: none; cell_switch.h)
+    double cell_switch_time = -1;               ///< the end of the step it switched in, when this run did [s]
     double physical_time = 0, wall_time = 0, loop_time = 0;
     double ns_per_particle_step = 0;
     double dt_last = 0;
@@ -67,7 +69,9 @@ struct RunSummary {
 /// Builds the backend's initial data from the case (particles in id order); cells of
 /// mode cell_div (resolveCellDiv; physics::cellSizeOfMode) with a skin of `skin` cells (cell_grid.h).
 /// `pair_lanes`: as RunOptions::pair_lanes (0: resolvePairLanes's choice).
-BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0);
+/// `cell_switch`: RunOptions::cell_switch (resolveCellSwitch; 0: no switch).
+BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, int pair_lanes = 0,
+                              double cell_switch = 0.0);
 /// Fluid particles from which one pair lane suffices (resolvePairLanes).
 constexpr std::uint32_t kPairLaneThreads = 98304;
 /// The most pair lanes resolvePairLanes chooses.
@@ -206,7 +210,8 @@ private:
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir);
 
 /// One-line description of the physics options ("symplectic, Wendland, artificial 0.1, ...").
+/// `cell_switch`: the fraction of the run's cells' switch (resolveCellSwitch; 0: none).
 std::string describePhysics(const SolverParameters& p, int dim, int cell_div, double skin,
-                            std::uint32_t pair_lanes = 1);
+                            std::uint32_t pair_lanes = 1, double cell_switch = 0.0);
 
 }  // namespace seaspring::solver

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -122,6 +123,8 @@ RunSummary Simulation::run() {
     // the step's end then holds that evaluation's writes, Backend::divideThenForces) is acted
     // on one step later, at the end of a step that launched nothing ahead.
     bool terminate_pending = false;
+    // The cells' switch (cell_switch.h), said in the log once, when it happens in this run.
+    bool switch_said = !setup_.cell_switch.on || backend_->divideCounts().cell_switch_divide != 0;
     sum_.stop_reason = "TimeMax reached";
     while (t < endOf(tmax)) {
         if (max_steps >= 0 && step >= max_steps) {
@@ -153,6 +156,20 @@ RunSummary Simulation::run() {
 
         if (gauges_) gauges_->evaluate(t, *backend_);
         const std::uint32_t active = backend_->activeFluid();
+        if (!switch_said && backend_->divideCounts().cell_switch_divide != 0) {
+            const DivideCounts dc = backend_->divideCounts();
+            switch_said = true;
+            sum_.cell_switch_time = t;
+            char line[256];
+            std::snprintf(line, sizeof line,
+                          "  cells of h from divide %llu (step %lld, t=%g s): %llu of %llu fluid particles (%.1f%%) "
+                          "shared their cells with another\n",
+                          static_cast<unsigned long long>(dc.cell_switch_divide), step, t,
+                          static_cast<unsigned long long>(dc.cell_switch_shared),
+                          static_cast<unsigned long long>(dc.cell_switch_fluid),
+                          100.0 * double(dc.cell_switch_shared) / double(dc.cell_switch_fluid));
+            log_ << line;
+        }
         if (!warned_out) warned_out = warnExcludedFluid(log_, case_, active);
         const bool output_due = t >= outputFrom(next_out, tout) || t >= tmax;
         if (!checkStep(t, step, done.dt, active, ctx.counters().dtmin_hits, output_due)) break;
@@ -215,6 +232,7 @@ void Simulation::finish(double t, long long step, double loop_time, const StepCo
     sum_.sorts = dc.sorts;
     sum_.boundary_sorts = dc.boundary_sorts;
     sum_.merged_sorts = dc.merged_sorts;
+    sum_.cell_switch_divide = dc.cell_switch_divide;
     sum_.solid_substeps = counters.solid_substeps;
     sum_.omega_max = counters.omega_max;
     if (setup_.solid.empty()) return;

@@ -9,10 +9,13 @@
 ///        without a GPU; tools/device_test.sh runs it on one.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <optional>
+#include <random>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -125,7 +128,8 @@ struct Pair {
     bool ok = false;
 
     Pair(const std::string& case_path, int cell_div, double skin = physics::kDefaultSkinFraction,
-         void (*tweak)(solver::SolverParameters&) = nullptr) {
+         void (*tweak)(solver::SolverParameters&) = nullptr, double cell_switch = 0.0,
+         void (*adjust)(solver::BackendSetup&) = nullptr) {
         std::string why;
         b = Kind::make(why);
         if (!b) {
@@ -134,7 +138,8 @@ struct Pair {
         }
         kase = solver::loadSolverCase(case_path);
         if (tweak) tweak(kase.params);
-        setup = solver::makeBackendSetup(kase, cell_div, skin);
+        setup = solver::makeBackendSetup(kase, cell_div, skin, 0, cell_switch);
+        if (adjust) adjust(setup);
         ref = solver::makeCpuBackend(1);
         ref->init(setup);
         b->init(setup);
@@ -335,6 +340,123 @@ TYPED_TEST(BackendPhases, SymplecticStep3DNoSkinSortsAtEveryDivide) {
     EXPECT_EQ(c.merged_sorts, p.b->divideCounts().merged_sorts);
 }
 
+namespace {
+
+/// The dam break's fluid scattered off its lattice by up to 0.7 dp along each axis (a fixed
+/// sequence), with velocities of up to 0.07 m/s: at the first sort much of it shares its cells
+/// of dp with a neighbour.
+void scatterFluid(solver::BackendSetup& s) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-0.7, 0.7);
+    const double dp = s.grid.cellsize;
+    for (std::size_t i = s.nbound; i < s.pos.size(); ++i) {
+        s.pos[i].x += u(rng) * dp;
+        s.pos[i].y += u(rng) * dp;
+        s.pos[i].z += u(rng) * dp;
+        s.velrho[i].x = float(0.1 * u(rng));  // and stirred, so that every pair term counts
+        s.velrho[i].y = float(0.1 * u(rng));
+        s.velrho[i].z = float(0.1 * u(rng));
+    }
+}
+
+/// Gauge queries on the dam break: kernel-sum points in and around the water column, and maxz
+/// columns through it, one reaching past the domain.
+solver::GaugeQueries damBreakGauges() {
+    solver::GaugeQueries q;
+    for (double x : {0.05, 0.2, 0.35})
+        for (double z : {0.02, 0.1, 0.2}) q.points.push_back(physics::Double3{x, 0.3, z});
+    q.columns.push_back(solver::MaxzColumn{physics::Double3{0.1, 0.2, -0.1}, physics::Double3{0.2, 0.3, 1.0}, 0.15, 0.25, 0.0025});
+    q.columns.push_back(solver::MaxzColumn{physics::Double3{-1.0, -1.0, -1.0}, physics::Double3{9.0, 9.0, 9.0}, 0.3, 0.3, 100.0});
+    return q;
+}
+
+}  // namespace
+
+// The cells' switch (solver/cell_switch.h) at the first sort of a scattered dam break: both
+// blocks sorted into cells of h, the fixed walls too; every phase after it the same bits as the
+// 1-thread host's, and both switch at the same divide.
+TYPED_TEST(BackendPhases, SymplecticStepsAcrossTheCellSwitch3D) {
+    const std::string dir = test::scratch("phases_switch");
+    const std::string kase = test::generateCaseFile(dir, "db3d", test::caseDef("dambreak3d/DamBreak3D_Def.xml"), 0.03);
+    Pair<TypeParam> p(kase, 0, physics::kDefaultSkinFraction, nullptr, 0.3, scatterFluid);
+    ASSERT_TRUE(p.ok) << p.skip_reason;
+    ASSERT_TRUE(p.setup.cell_switch.on);
+    EXPECT_EQ(p.setup.grid.cell_div, physics::kCellDivSpacing);
+    EXPECT_EQ(p.setup.cell_switch.grid.cell_div, 2);
+    p.both([&](Backend& b) { b.setGauges(damBreakGauges()); });
+    symplecticSteps(p, 2, "3D across the cells' switch");
+    EXPECT_EQ(p.ref->divideCounts().cell_switch_divide, 1u);
+    EXPECT_EQ(p.b->divideCounts().cell_switch_divide, 1u);
+    EXPECT_GT(p.ref->divideCounts().cell_switch_shared, p.ref->divideCounts().cell_switch_fluid / 4);
+    solver::GaugeResults x, y;
+    p.ref->gauges(x);
+    p.b->gauges(y);
+    EXPECT_TRUE(sameBytes(x.samples, y.samples)) << "kernel sums at the gauge points";
+    EXPECT_TRUE(sameBytes(x.maxz, y.maxz)) << "maxz columns";
+}
+
+// The same scattered state in the first cells and switched to cells of h: the same neighbours,
+// so the same forces, dt maxima and gauge answers up to the summation order (relative 1e-5 of
+// each field's largest magnitude; the maxz columns exactly: a maximum has no order). The fixed
+// walls' cells, near flags and row extents, and the gauges' cells, all follow the switch.
+TEST(CellSwitch, FindsTheNeighboursOfTheFirstCells) {
+    const std::string dir = test::scratch("cell_switch_same");
+    const std::string kase = test::generateCaseFile(dir, "db3d", test::caseDef("dambreak3d/DamBreak3D_Def.xml"), 0.03);
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    solver::BackendSetup on = solver::makeBackendSetup(c, 0, physics::kDefaultSkinFraction, 0, 0.3);
+    ASSERT_TRUE(on.cell_switch.on);
+    scatterFluid(on);
+    solver::BackendSetup off = on;
+    off.cell_switch.on = false;
+    std::unique_ptr<Backend> a = solver::makeCpuBackend(2), b = solver::makeCpuBackend(2);
+    a->init(on);
+    b->init(off);
+    std::vector<solver::HostParticles> fields(2);
+    std::vector<physics::DtMaxima> maxima(2);
+    std::vector<solver::GaugeResults> answers(2);
+    int k = 0;
+    for (Backend* e : {a.get(), b.get()}) {
+        e->setGauges(damBreakGauges());
+        e->divide(false);
+        maxima[k] = e->computeForces();
+        e->downloadFields(fields[k]);
+        e->gauges(answers[k]);
+        ++k;
+    }
+    ASSERT_EQ(a->divideCounts().cell_switch_divide, 1u);
+    ASSERT_EQ(b->divideCounts().cell_switch_divide, 0u);
+    auto close = [](const std::vector<float>& u, const std::vector<float>& v, const char* what) {
+        ASSERT_EQ(u.size(), v.size()) << what;
+        float big = 0.f, worst = 0.f;
+        for (std::size_t i = 0; i < u.size(); ++i) big = std::max(big, std::fabs(v[i]));
+        for (std::size_t i = 0; i < u.size(); ++i) worst = std::max(worst, std::fabs(u[i] - v[i]));
+        EXPECT_GT(big, 0.f) << what;
+        EXPECT_LE(worst, 1e-5f * big) << what << ": largest difference " << worst << " of " << big;
+    };
+    auto column = [&](int f, int comp) {
+        std::vector<float> r;
+        for (const physics::Float4& q : fields[f].acear) r.push_back(comp == 0 ? q.x : comp == 1 ? q.y : comp == 2 ? q.z : q.w);
+        return r;
+    };
+    close(column(0, 0), column(1, 0), "ace x");
+    close(column(0, 1), column(1, 1), "ace y");
+    close(column(0, 2), column(1, 2), "ace z");
+    close(column(0, 3), column(1, 3), "d(rho)/dt");
+    close(fields[0].visc, fields[1].visc, "viscous dt measure");
+    EXPECT_NEAR(maxima[0].ace2, maxima[1].ace2, 1e-5 * maxima[1].ace2);
+    EXPECT_NEAR(maxima[0].visc, maxima[1].visc, 1e-5 * maxima[1].visc);
+    ASSERT_EQ(answers[0].samples.size(), answers[1].samples.size());
+    std::vector<float> m0, m1;
+    for (std::size_t i = 0; i < answers[0].samples.size(); ++i) {
+        m0.push_back(float(answers[0].samples[i].mass));
+        m1.push_back(float(answers[1].samples[i].mass));
+    }
+    close(m0, m1, "gauge kernel sums (mass)");
+    EXPECT_EQ(answers[0].maxz, answers[1].maxz);
+    ASSERT_EQ(answers[0].maxz.size(), 2u);
+    EXPECT_GT(answers[0].maxz[0], 0.1);  // the water column's top, not the -1e300 of an empty search
+}
+
 /// The hydrostatic plate's coupled steps; `def`: the DBC case or its mDBC sibling (ghost vectors
 /// on the walls and on the plate's wet face, following its deformation).
 template <class Kind>
@@ -471,7 +593,7 @@ TYPED_TEST(BackendPhases, GaugesOnTheSortedState) {
     Pair<TypeParam> p(kase, 0);
     ASSERT_TRUE(p.ok) << p.skip_reason;
     std::ostringstream log;
-    solver::GaugeSystem gauges(p.kase, p.setup, dir + "/out", log);
+    solver::GaugeSystem gauges(p.kase, dir + "/out", log);
     p.both([&](Backend& b) {
         gauges.attach(b);
         b.divide(false);

@@ -229,3 +229,44 @@ TEST(Restart, CpuAndGpuContinueEachOthersRuns) {
     ASSERT_EQ(c.status, 0) << c.out;
     EXPECT_EQ(stateHash(c), stateHash(a)) << c.out;
 }
+
+// The cells' switch (solver/cell_switch.h) across restarts: the 3D dam break (cells of dp) goes
+// over to cells of h at step 188 of 250 with -cellswitch:0.05. A file written after the switch
+// holds the cells of h (their cell ranges and near flags) and continues with the uninterrupted
+// run's bits, on the CPU and (where usable) on the GPU; a file written before it switches
+// later, as the uninterrupted run did. Without the switch the options differ: refused.
+TEST(Restart, ContinuesAcrossTheCellSwitch) {
+    const std::string dir = test::scratch("restart_switch");
+    fs::remove_all(dir);
+    const std::string kase =
+        test::generateCaseFile(dir + "/case", "db", test::caseDef("dambreak3d/DamBreak3D_Def.xml"), 0.04);
+    const std::string run = "-tmax:1 -tout:0.05 -progress:0 -sv:none -cellswitch:0.05 ";
+    const Program a = runSeaspring("-cpu -threads:1 " + run + "-nsteps:250 " + kase + " " + dir + "/whole");
+    ASSERT_EQ(a.status, 0) << a.out;
+    ASSERT_NE(a.out.find("shared their cells with another"), std::string::npos) << a.out;
+    const std::string after = dir + "/after", before = dir + "/before";
+    ASSERT_EQ(runSeaspring("-cpu -threads:2 " + run + "-checkpoint:0.08 -nsteps:220 " + kase + " " + after).status, 0);
+    ASSERT_EQ(runSeaspring("-cpu -threads:2 " + run + "-checkpoint:0.05 -nsteps:150 " + kase + " " + before).status, 0);
+    const Program c = runSeaspring("-cpu -threads:2 " + run + "-nsteps:250 -restart:" + after + "/restart.h5 " + kase +
+                                   " " + dir + "/c1");
+    ASSERT_EQ(c.status, 0) << c.out;
+    EXPECT_EQ(c.out.find("shared their cells with another"), std::string::npos) << "switched before the file: " << c.out;
+    EXPECT_NE(c.out.find("; cells of h from divide"), std::string::npos) << c.out;
+    EXPECT_EQ(stateHash(c), stateHash(a)) << c.out;
+    EXPECT_NE(test::readFile(dir + "/c1/run.json").find("\"cell_switch_divide\": "), std::string::npos);
+    const Program d = runSeaspring("-cpu -threads:1 " + run + "-nsteps:250 -restart:" + before + "/restart.h5 " + kase +
+                                   " " + dir + "/c2");
+    ASSERT_EQ(d.status, 0) << d.out;
+    EXPECT_NE(d.out.find("shared their cells with another"), std::string::npos) << d.out;
+    EXPECT_EQ(stateHash(d), stateHash(a)) << d.out;
+    if (gpuUsable()) {
+        const Program g = runSeaspring("-gpu " + run + "-nsteps:250 -restart:" + after + "/restart.h5 " + kase + " " +
+                                       dir + "/c3");
+        ASSERT_EQ(g.status, 0) << g.out;
+        EXPECT_EQ(stateHash(g), stateHash(a)) << g.out;
+    }
+    const Program n = runSeaspring("-cpu " + std::string("-tmax:1 -progress:0 -sv:none -cellswitch:0 -nsteps:250 ") +
+                                   "-restart:" + after + "/restart.h5 " + kase + " " + dir + "/c4");
+    EXPECT_NE(n.status, 0);
+    EXPECT_NE(n.out.find("same options"), std::string::npos) << n.out;
+}

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "solver/cell_switch.h"
 #include "solver/grid_origin.h"
 #include "solver_test_util.h"
 
@@ -133,6 +134,48 @@ TEST(SolverParity, ThreadCountsGiveIdenticalHashes3D) {
         maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r3.state.pos[i].z));
     EXPECT_LT(maxdiff, 1e-5);
     EXPECT_NE(r1.summary.options.find("cells of dp"), std::string::npos) << r1.summary.options;  // 1.5 dp < h < 2 dp
+}
+
+// The cells' switch (solver/cell_switch.h): the 3D dam break's cells of dp go over to cells of h
+// once 5% of its fluid shares its cells (at step 188 of 250), at the same divide with 1 and 2
+// threads and with the same bits after it; without the switch (-cellswitch:0) the hash differs
+// (the neighbour order) and the state stays close.
+TEST(SolverParity, CellSwitchKeepsThreadCountsIdentical) {
+    const std::string dir = scratch("switch");
+    const std::string kase = test::generateCaseFile(
+        dir, "db", std::string(SEASPRING_SOURCE_DIR) + "/cases/dambreak3d/DamBreak3D_Def.xml", 0.04);
+    auto run = [&](const std::string& out, int threads, double fraction) {
+        return test::runCpu(kase, dir + "/" + out, threads, [fraction](solver::RunOptions& o) {
+            o.nsteps = 250;
+            o.cell_switch = fraction;
+        });
+    };
+    const auto r1 = run("out1", 1, 0.05), r2 = run("out2", 2, 0.05), r0 = run("out0", 2, 0.0);
+    EXPECT_GT(r1.summary.cell_switch_divide, 0u);
+    EXPECT_LT(r1.summary.cell_switch_divide, 480u);
+    EXPECT_EQ(r1.summary.cell_switch_divide, r2.summary.cell_switch_divide);
+    EXPECT_GT(r1.summary.cell_switch_time, 0.0);
+    EXPECT_EQ(r1.summary.state_hash, r2.summary.state_hash);
+    EXPECT_NE(r1.summary.options.find("cells of dp with a skin of 0.25 cell (h once 0.05 of the fluid shares them)"),
+              std::string::npos)
+        << r1.summary.options;
+    EXPECT_EQ(r0.summary.cell_switch_divide, 0u);
+    EXPECT_EQ(r0.summary.options.find("h once"), std::string::npos) << r0.summary.options;
+    EXPECT_NE(r0.summary.state_hash, r1.summary.state_hash);
+    double maxdiff = 0;
+    for (std::size_t i = 0; i < r1.state.pos.size(); ++i)
+        maxdiff = std::max(maxdiff, std::abs(r1.state.pos[i].z - r0.state.pos[i].z));
+    EXPECT_LT(maxdiff, 1e-5);
+    // Where it does not apply: 2D, an explicit cell mode, cells of h/2 (h = 2 dp).
+    EXPECT_EQ(solver::resolveCellSwitch(r1.kase, 0, 0.3), 0.3);
+    EXPECT_EQ(solver::resolveCellSwitch(r1.kase, physics::kCellDivSpacing, 0.3), 0.0);
+    EXPECT_EQ(solver::resolveCellSwitch(r1.kase, 0, 0.0), 0.0);
+    solver::SolverCase fat = r1.kase;
+    fat.constants.h = 2.0 * fat.constants.dp;
+    EXPECT_EQ(solver::resolveCellSwitch(fat, 0, 0.3), 0.0);
+    const auto flat = test::runCpu(test::generateCase(dir, "tank", tank2d(kVariants[0].params)), dir + "/o2d", 1,
+                                   [](solver::RunOptions& o) { o.nsteps = 1; });
+    EXPECT_EQ(solver::resolveCellSwitch(flat.kase, 0, 0.3), 0.0);
 }
 
 // h = 2 dp (SPHERIC Test 2's choice) and cells of h/2 = dp: the cell grid starts half a spacing

@@ -237,3 +237,42 @@ TEST(CellSearch, APositionOutsideTheSkinOfItsCellAsksForASort) {
     posCellInCell(g, Double3{0.52, 0.51, std::nan("")}, pc.w, outside);
     EXPECT_TRUE(outside);
 }
+
+// The cells' switch rule (solver/cell_switch.h): a particle shares its cell when its block's cell
+// range holds two or more; counted on a sorted block of a lattice centred in its cells (none
+// shares), then with one particle moved into its neighbour's cell (both share, wherever in it).
+TEST(CellSearch, SharesItsCellCountsTheParticlesOfCellsHoldingTwoOrMore) {
+    CellGrid g;
+    ASSERT_TRUE(makeCellGrid(0, 0, 0, 0.1, 0.1, 0.1, 0.015, kCellDivSpacing, g, 0.0, 0.01));
+    auto block = [&](std::vector<Double3> pos) {
+        std::vector<Float4> pc(pos.size());
+        std::vector<std::uint64_t> keys(pos.size());
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+            std::uint32_t cell;
+            pc[i] = makePosCell(g, pos[i], cell);
+            keys[i] = sortKey(cell, std::uint32_t(i), false);
+        }
+        std::vector<std::size_t> order(pos.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+        std::vector<Float4> sorted;
+        std::vector<std::uint64_t> skeys;
+        for (std::size_t k : order) sorted.push_back(pc[k]), skeys.push_back(keys[k]);
+        std::vector<std::uint32_t> cs(g.cellCount() + 1);
+        for (std::uint32_t c = 0; c <= g.cellCount(); ++c) cellStartOuterAt(c, 0, std::uint32_t(sorted.size()), skeys.data(), cs.data());
+        for (std::uint32_t k = 0; k < sorted.size(); ++k) cellStartFillAt(k, 0, skeys.data(), cs.data());
+        int shared = 0;
+        for (const Float4& p : sorted) shared += sharesItsCell(p, cs.data(), g) ? 1 : 0;
+        return std::make_pair(shared, sorted.size());
+    };
+    std::vector<Double3> lattice;
+    for (int z = 0; z < 4; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) lattice.push_back(Double3{0.005 + 0.01 * x, 0.005 + 0.01 * y, 0.005 + 0.01 * z});
+    EXPECT_EQ(block(lattice).first, 0);
+    std::vector<Double3> moved = lattice;
+    moved[5].x += 0.01;  // into particle 6's cell
+    EXPECT_EQ(block(moved).first, 2);
+    moved[5].x += 0.003;
+    EXPECT_EQ(block(moved).first, 2);
+}

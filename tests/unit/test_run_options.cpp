@@ -100,6 +100,9 @@ TEST(RunOptions, RunControl) {
     EXPECT_FALSE(parseWith({}).skin.has_value());
     EXPECT_EQ(*parseWith({"-skin:0"}).skin, 0.0);
     EXPECT_EQ(*parseWith({"-skin:0.25"}).skin, 0.25);
+    EXPECT_EQ(parseWith({}).cell_switch, solver::kCellSwitchFraction);
+    EXPECT_EQ(parseWith({"-cellswitch:0"}).cell_switch, 0.0);
+    EXPECT_EQ(parseWith({"-cellswitch:0.45"}).cell_switch, 0.45);
     EXPECT_EQ(parseWith({}).pair_lanes, 0);
     EXPECT_EQ(parseWith({"-pairlanes:1"}).pair_lanes, 1);
     EXPECT_EQ(parseWith({"-pairlanes:8"}).pair_lanes, 8);
@@ -226,6 +229,8 @@ TEST(RunOptions, UnknownAndMalformedOptions) {
     expectError({"-cpu:1"}, "-cpu:1: -cpu takes no value");
     expectError({"-skin:0.7"}, "-skin:0.7: 0.7 is larger than 0.5 (the skin is a fraction of the cell size)");
     expectError({"-skin:-1"}, "-skin:-1: -1 must be >= 0");
+    expectError({"-cellswitch:1.5"}, "-cellswitch:1.5: 1.5 is larger than 1 (the share of the fluid in cells it shares; 0: never switch)");
+    expectError({"-cellswitch:-0.1"}, "-cellswitch:-0.1: -0.1 must be >= 0");
     expectError({"-pairlanes:3"}, "-pairlanes:3: 3 is not a power of two (pair lanes: 1, 2, 4 or 8; 0: auto)");
     expectError({"-pairlanes:16"}, "-pairlanes:16: 16 must be 0..8 (pair lanes: 1, 2, 4 or 8; 0: auto)");
     expectError({"-symplectic:1"}, "-symplectic:1: -symplectic takes no value");
