@@ -306,12 +306,12 @@ private:
     void switchCellsIfDue(bool pre) {
         const CellSwitch& sw = setup_.cell_switch;
         if (!sw.on || cells_switched_ || nfluid_ == 0u) return;
-        const std::uint32_t off = exec_.reduce(nbound_, nbound_ + nfluid_, 0u,
-                                               SharedCellCountPass{p_.poscell.data(), cs_fluid_.data(), setup_.grid},
-                                               CountCombine{});
-        if (!(double(off) > sw.fraction * double(nfluid_))) return;
+        const std::uint32_t shared = exec_.reduce(nbound_, nbound_ + nfluid_, 0u,
+                                                  SharedCellCountPass{p_.poscell.data(), cs_fluid_.data(), setup_.grid},
+                                                  CountCombine{});
+        if (!(double(shared) > sw.fraction * double(nfluid_))) return;
         counts_.cell_switch_divide = counts_.divides;
-        counts_.cell_switch_shared = off;
+        counts_.cell_switch_shared = shared;
         counts_.cell_switch_fluid = nfluid_;
         useCells(true);
         sortRange(0, nbound_, cs_bound_, pre);

@@ -53,6 +53,16 @@ std::string skinOf(const std::string& options) {
     return options.substr(b, e == std::string::npos ? std::string::npos : e - b);
 }
 
+/// The -cellswitch value of an option line's "(h once F of the fluid shares them)"
+/// (describePhysics), "0" without one.
+std::string cellSwitchOf(const std::string& options) {
+    const std::string key = "(h once ";
+    const std::size_t at = options.find(key);
+    if (at == std::string::npos) return "0";
+    const std::size_t b = at + key.size(), e = options.find(' ', b);
+    return options.substr(b, e == std::string::npos ? std::string::npos : e - b);
+}
+
 }  // namespace
 
 bool restartContinuesIn(const std::string& restart_file, const std::string& outdir) {
@@ -113,13 +123,18 @@ Simulation::LoopState Simulation::resume(TimeStepper& stepper, StepContext& ctx)
         throw Error(d.source + ": restart file of case '" + d.text("loop/case") + "', this run is case '" + case_.name +
                     "'");
     if (d.text("loop/options") != sum_.options) {
-        // The cell mode and the skin are what an option line may differ in without any option
-        // given: their defaults changed (cells of dp where 1.5 dp < h < 2 dp, twenty-first
-        // session; a skin of 0.25 below 262,144 particles, thirtieth session).
+        // The cell mode, the skin and the cells' switch are what an option line may differ in
+        // without any option given: their defaults changed (cells of dp where 1.5 dp < h < 2 dp,
+        // twenty-first session; a skin of 0.25 below 262,144 particles, thirtieth session; the
+        // switch, thirty-first session).
         const std::string was = cellModeOf(d.text("loop/options")), now = cellModeOf(sum_.options);
         std::string hint = !was.empty() && was != now ? "; its cells differ: continue it with -cellmode:" + was : "";
         const std::string skin_was = skinOf(d.text("loop/options"));
         if (skin_was != skinOf(sum_.options)) hint += "; its skin differs: continue it with -skin:" + skin_was;
+        // The cells' switch (cell_switch.h, thirty-first session): a file of a run without it.
+        const std::string switch_was = cellSwitchOf(d.text("loop/options"));
+        if (switch_was != cellSwitchOf(sum_.options))
+            hint += "; its cells' switch differs: continue it with -cellswitch:" + switch_was;
         throw Error(d.source + ": restart file written with the options\n  " + d.text("loop/options") +
                     "\nthis run has\n  " + sum_.options + "\n(a restart continues the same run: give the same options" +
                     hint + ")");

@@ -234,7 +234,8 @@ TEST(Restart, CpuAndGpuContinueEachOthersRuns) {
 // over to cells of h at step 188 of 250 with -cellswitch:0.05. A file written after the switch
 // holds the cells of h (their cell ranges and near flags) and continues with the uninterrupted
 // run's bits, on the CPU and (where usable) on the GPU; a file written before it switches
-// later, as the uninterrupted run did. Without the switch the options differ: refused.
+// later, as the uninterrupted run did. Without the switch the options differ: refused, naming
+// the -cellswitch that continues it (both ways).
 TEST(Restart, ContinuesAcrossTheCellSwitch) {
     const std::string dir = test::scratch("restart_switch");
     fs::remove_all(dir);
@@ -269,4 +270,14 @@ TEST(Restart, ContinuesAcrossTheCellSwitch) {
                                    "-restart:" + after + "/restart.h5 " + kase + " " + dir + "/c4");
     EXPECT_NE(n.status, 0);
     EXPECT_NE(n.out.find("same options"), std::string::npos) << n.out;
+    EXPECT_NE(n.out.find("its cells' switch differs: continue it with -cellswitch:0.05)"), std::string::npos) << n.out;
+    // A file of a run without the switch (as one written before it existed), continued with it.
+    ASSERT_EQ(runSeaspring("-cpu " + std::string("-tmax:1 -progress:0 -sv:none -cellswitch:0 -checkpoint:0.05 ") +
+                           "-nsteps:150 " + kase + " " + dir + "/plain")
+                  .status,
+              0);
+    const Program m = runSeaspring("-cpu -tmax:1 -progress:0 -sv:none -nsteps:250 -restart:" + dir +
+                                   "/plain/restart.h5 " + kase + " " + dir + "/c5");
+    EXPECT_NE(m.status, 0);
+    EXPECT_NE(m.out.find("its cells' switch differs: continue it with -cellswitch:0)"), std::string::npos) << m.out;
 }
