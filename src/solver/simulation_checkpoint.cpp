@@ -44,24 +44,16 @@ std::string cellModeOf(const std::string& options) {
     return "";
 }
 
-/// The -skin value of an option line's "with a skin of F cell" (describePhysics), "0" without one.
-std::string skinOf(const std::string& options) {
-    const std::string key = "with a skin of ";
+/// The word after `key` in an option line (describePhysics), "0" without it: the -skin of
+/// "with a skin of F cell", the -cellswitch of "(h once F of the fluid shares them)".
+std::string valueAfter(const std::string& options, const std::string& key) {
     const std::size_t at = options.find(key);
     if (at == std::string::npos) return "0";
     const std::size_t b = at + key.size(), e = options.find(' ', b);
     return options.substr(b, e == std::string::npos ? std::string::npos : e - b);
 }
-
-/// The -cellswitch value of an option line's "(h once F of the fluid shares them)"
-/// (describePhysics), "0" without one.
-std::string cellSwitchOf(const std::string& options) {
-    const std::string key = "(h once ";
-    const std::size_t at = options.find(key);
-    if (at == std::string::npos) return "0";
-    const std::size_t b = at + key.size(), e = options.find(' ', b);
-    return options.substr(b, e == std::string::npos ? std::string::npos : e - b);
-}
+std::string skinOf(const std::string& options) { return valueAfter(options, "with a skin of "); }
+std::string cellSwitchOf(const std::string& options) { return valueAfter(options, "(h once "); }
 
 }  // namespace
 

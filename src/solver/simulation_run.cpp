@@ -156,8 +156,8 @@ RunSummary Simulation::run() {
 
         if (gauges_) gauges_->evaluate(t, *backend_);
         const std::uint32_t active = backend_->activeFluid();
-        if (!switch_said && backend_->divideCounts().cell_switch_divide != 0) {
-            const DivideCounts dc = backend_->divideCounts();
+        const DivideCounts dc = switch_said ? DivideCounts{} : backend_->divideCounts();
+        if (dc.cell_switch_divide != 0) {
             switch_said = true;
             sum_.cell_switch_time = t;
             char line[256];
