@@ -64,6 +64,18 @@
 #            It assumes the coarse run's later phases cost, relative to its start, what the fine
 #            run's would (more steps per simulated second after the impacts, disordered flow,
 #            more sorts, water leaving the domain).
+#   capacity (optional, off by default, about 250 M particles at the default dp: run it alone)
+#            SPHERIC Test 2 at CAPACITY_DP (default 0.0015) for CAPACITY_NSTEPS (10) steps, as the
+#            fluid part's runs: how large a case this GPU and this machine hold. Rows: the GPU
+#            arrays' bytes per particle (SeaSpring's own count of its allocations, run.json's
+#            memory.gpu_arrays_peak_bytes / particles), the peak of nvidia-smi's memory.used, the
+#            host's peak bytes per particle of the solver (run.json memory.host_peak_bytes) and of
+#            gencase (its "host memory peak"), the case file's bytes per particle, and the largest
+#            SPHERIC-like case: on this GPU the run's particles + (memory.total - the peak of
+#            memory.used) / the arrays' bytes per particle; in this host's memory MemTotal / the
+#            larger of the solver's and gencase's host bytes per particle (bench_table.py capacity).
+#            Both assume the bytes per particle stay as measured (the cells grow with the domain,
+#            not with the particles; a case with solids or SPS holds more per particle).
 #
 # Every run: -sv:none -progress:0 (sluice, sluicerun: progress lines); the figures are read from
 # OUTDIR/run.json. Cases are generated once per dp with the new build's gencase and cached under
@@ -118,7 +130,7 @@ table_py="$root/tools/bench_table.py"
 read -r -a backend <<<"${BENCH_BACKEND:--gpu}"
 read -r -a extra <<<"${BENCH_ARGS:-}"
 [[ -n "${BENCH_NSTEPS:-}" ]] && extra+=("-nsteps:$BENCH_NSTEPS")
-all_parts=(fluid1m fluid violent memory sps small fsi3d cpu sluice sluicerun)
+all_parts=(fluid1m fluid violent memory sps small fsi3d cpu sluice sluicerun capacity)
 default_parts=(fluid sps memory small fsi3d)
 
 usage() { sed -n '2,/^set -uo/p' "${BASH_SOURCE[0]}" | sed '$d' | sed 's/^# \{0,1\}//'; }
@@ -127,7 +139,7 @@ for a in "$@"; do
   case "$a" in
     -h|--help) usage; exit 0 ;;
     default) want+=("${default_parts[@]}") ;;
-    fluid1m|fluid|violent|memory|sps|small|fsi3d|cpu|sluice|sluicerun) want+=("$a") ;;
+    fluid1m|fluid|violent|memory|sps|small|fsi3d|cpu|sluice|sluicerun|capacity) want+=("$a") ;;
     *) echo "bench.sh: unknown part '$a' (parts: ${all_parts[*]}; default: ${default_parts[*]})" >&2; exit 2 ;;
   esac
 done
@@ -387,7 +399,7 @@ main() {
   command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=index,name,driver_version,memory.total,memory.used --format=csv,noheader | sed 's/^/   GPU /'
   local spheric="" s100k="" gen_ok
 
-  if selected fluid1m || selected fluid || selected violent || selected memory || selected sps; then
+  if selected fluid1m || selected fluid || selected violent || selected memory || selected sps || selected capacity; then
     spheric=$(shared_case Spheric2Dam_01M.xml) || spheric=""
   fi
   local fluid_args=("${backend[@]}" -symplectic -wendland -ddt:3 -tmax:"${FLUID_TMAX:-0.02}")
@@ -482,6 +494,24 @@ main() {
   if selected sluicerun; then
     echo "== sluicerun: SluiceGate3D at dp ${SLUICE_RUN_DP:-0.003}, its whole ${SLUICE_TEND:-2} s (the window-to-whole-run factor)"
     sluice_rounds sluice_run_one "${SLUICE_RUN_DP:-0.003}" sluice3d_run
+  fi
+
+  if selected capacity; then
+    local cdp=${CAPACITY_DP:-0.0015} r b host_bytes
+    echo "== capacity: SPHERIC Test 2 at dp $cdp, ${CAPACITY_NSTEPS:-10} steps: the largest case this GPU and host hold"
+    host_bytes=$(awk '/^MemTotal:/ {printf "%.0f", $2 * 1024}' /proc/meminfo)
+    if [[ "${backend[*]}" == *-cpu* ]] || ! command -v nvidia-smi >/dev/null; then
+      record_status capacity FAILED "capacity needs the GPU and nvidia-smi (BENCH_BACKEND is ${backend[*]})"
+    elif [[ -n "$spheric" ]] && ensure_case "spheric_dp$cdp" "$spheric" "$cdp"; then
+      for ((r = 1; r <= rounds; ++r)); do
+        for b in "${builds[@]}"; do
+          run_one capacity gpu_bpp "$b" "$r" "spheric_dp$cdp" capacity_smi_peak "${fluid_args[@]}" \
+            -nsteps:"${CAPACITY_NSTEPS:-10}"
+          python3 "$table_py" capacity "$raw" "$b" "$r" "$work/runs/capacity_${b}_r$r/run.json" \
+            "$work/cases/spheric_dp$cdp.gencase.log" "$host_bytes" --device "$(gpu_name)"
+        done
+      done
+    else no_case capacity; fi
   fi
 
   echo

@@ -19,6 +19,14 @@ Standard library only (the GPU machine's python3 has no numpy). Subcommands:
       second over the whole run, divided by its rate over the dp 1 mm window's simulated
       interval (that round's sluice3d row; else T0..T0+SPAN), is the factor from the window's
       estimate to the whole run's.
+  capacity RAW BUILD ROUND RUN_JSON GENCASE_LOG HOST_BYTES [--device D]
+      append the capacity part's derived rows (bench.sh capacity) from the run's run.json, the
+      capacity_smi_peak row of that build and round, gencase's log ("host memory peak X MiB")
+      and the machine's memory (MemTotal, bytes): the solver's and gencase's host bytes per
+      particle, the case file's, and the largest SPHERIC-like case on this GPU (the run's
+      particles + the device's memory left at the run's peak of memory.used / the arrays'
+      bytes per particle) and in this host's memory (HOST_BYTES / the larger of the solver's
+      and gencase's host bytes per particle), in millions of particles.
   table RAW CSV_OUT
       print the table (fixed-width plain text) and write it as CSV.
   runs RAW
@@ -47,6 +55,7 @@ FIGURES = {
     "ms_per_step": lambda r: 1e3 * r["loop_time_s"] / r["steps"],     # ms / step
     "s_per_sim_s": lambda r: r["loop_time_s"] / r["physical_time_s"], # wall s / simulated s
     "loop_s": lambda r: r["loop_time_s"],                             # s of time loop
+    "gpu_bpp": lambda r: r["memory"]["gpu_arrays_bytes_per_particle"], # B / particle (the ledger)
 }
 
 # DualSPHysics' figures (and the other references), with their sources.
@@ -96,6 +105,13 @@ BENCHES = [
     ("sluice3d_run", "Sluice gate 3D coarse, its whole run", "whole/window rate", "{:.3f}", None),
     ("sluice3d_whole", "Sluice gate 3D dp 1 mm, 2 s (whole-run est.)", "h (estimate)", "{:.3f}", None),
     ("cpu_100K", "CPU 2 threads Spheric2Dam_100K", "us/particle/step", "{:.3f}", 116658),
+    ("capacity", "Capacity run: GPU arrays (ledger)", "B/particle", "{:.1f}", None),
+    ("capacity_smi_peak", "Capacity run: GPU memory peak", "MiB (memory.used)", "{:.0f}", None),
+    ("capacity_host_bpp", "Capacity run: solver's host peak", "B/particle", "{:.0f}", None),
+    ("capacity_gencase_bpp", "Capacity run: gencase's host peak", "B/particle", "{:.0f}", None),
+    ("capacity_case_bpp", "Capacity run: case file (.h5)", "B/particle", "{:.1f}", None),
+    ("capacity_n_gpu", "Largest SPHERIC-like case, this GPU", "M particles (est.)", "{:.0f}", None),
+    ("capacity_n_host", "Largest SPHERIC-like case, host memory", "M particles (est.)", "{:.0f}", None),
 ]
 MEM_PAIR = ("mem_peak_4.36M", "mem_peak_13.29M")
 MIB = 1024.0 * 1024.0
@@ -149,6 +165,51 @@ def cmd_memory(a):
     else:
         row.update(status="FAILED", note=(a.note + "; " if a.note else "") + "no memory samples")
     append_row(a.raw, row)
+
+
+GENCASE_PEAK = re.compile(r"host memory peak ([0-9.]+) MiB")
+
+
+def cmd_capacity(a):
+    """The capacity part's derived rows (see the module's docstring)."""
+    base = {"build": a.build, "round": a.round, "device": a.device, "backend": "cuda"}
+    names = ("capacity_host_bpp", "capacity_gencase_bpp", "capacity_case_bpp", "capacity_n_gpu", "capacity_n_host")
+    try:
+        with open(a.run_json) as f:
+            r = json.load(f)
+        n = int(r["particles"]["total"])
+        mem = r["memory"]
+        gpu_bpp = float(mem["gpu_arrays_bytes_per_particle"])
+        total = float(mem["gpu_total_bytes"])
+        host_bpp = float(mem["host_peak_bytes"]) / n
+        with open(a.raw, newline="") as f:
+            smi = [x for x in csv.DictReader(f) if x["bench"] == "capacity_smi_peak" and x["build"] == a.build
+                   and x["round"] == a.round and x["status"] == "ok"]
+        if not smi:
+            raise ValueError("no capacity_smi_peak row of this build and round")
+        smi_peak = float(smi[-1]["value"]) * MIB
+        with open(a.gencase_log) as f:
+            m = GENCASE_PEAK.search(f.read())
+        if not m:
+            raise ValueError(f"no 'host memory peak' in {a.gencase_log}")
+        gencase_bpp = float(m.group(1)) * MIB / n
+        h5 = os.path.splitext(a.gencase_log)[0]
+        h5 = h5[:-len(".gencase")] if h5.endswith(".gencase") else h5
+        case_bpp = os.path.getsize(h5 + ".h5") / n
+    except (OSError, ValueError, KeyError, ZeroDivisionError) as e:
+        for b in names:
+            append_row(a.raw, dict(base, bench=b, status="FAILED", note=f"capacity: {e}"))
+        return
+    n_gpu = n + (total - smi_peak) / gpu_bpp
+    n_host = float(a.host_bytes) / max(host_bpp, gencase_bpp)
+    vals = {"capacity_host_bpp": (host_bpp, f"{r['memory']['host_peak_bytes'] / MIB:.0f} MiB for {n:,} particles"),
+            "capacity_gencase_bpp": (gencase_bpp, f"{float(m.group(1)):.0f} MiB"),
+            "capacity_case_bpp": (case_bpp, f"{case_bpp * n / 2**30:.2f} GiB"),
+            "capacity_n_gpu": (n_gpu / 1e6, f"{n:,} + ({total / MIB:.0f} - {smi_peak / MIB:.0f} MiB) / {gpu_bpp:.1f} B"),
+            "capacity_n_host": (n_host / 1e6, f"{float(a.host_bytes) / 2**30:.1f} GiB / {max(host_bpp, gencase_bpp):.0f} B")}
+    for b in names:
+        v, note = vals[b]
+        append_row(a.raw, dict(base, bench=b, status="ok", particles=n, value=f"{v:.6g}", note=note))
 
 
 PROGRESS = re.compile(r"^t=([0-9.eE+-]+)/\S+ s\s+steps=(\d+)\s+dt=\S+\s+[0-9.]+ steps/s\s+([0-9.]+) ns/particle/step")
@@ -413,7 +474,7 @@ def cmd_table(a):
             if r["status"] != "ok":
                 bad.setdefault((r["status"], r["note"]), []).append(f"{r['build']} {r['round']}")
         notes += [f"{label} {st} ({', '.join(runs)}): {nt or 'no detail'}" for (st, nt), runs in bad.items()]
-        if key in ("sluice3d", "sluice3d_run", "sluice3d_whole"):
+        if key in ("sluice3d", "sluice3d_run", "sluice3d_whole") or key.startswith("capacity_n"):
             notes += [f"{label} [{r['build']} round {r['round']}]: {r['note']}" for r in ok(key, "new") + ok(key, "base")]
     if len(table) == 1:
         print("(no results)")
@@ -475,6 +536,11 @@ def main():
         for opt, default in (("--status", "ok"), ("--device", ""), ("--note", "")):
             s.add_argument(opt, default=default)
         s.set_defaults(fn=fn)
+    s = sub.add_parser("capacity")
+    for n in ("raw", "build", "round", "run_json", "gencase_log", "host_bytes"):
+        s.add_argument(n)
+    s.add_argument("--device", default="")
+    s.set_defaults(fn=cmd_capacity)
     s = sub.add_parser("table")
     s.add_argument("raw")
     s.add_argument("csv_out")

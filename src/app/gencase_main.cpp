@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "core/version.h"
 #include "gencase/case_builder.h"
 
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
         return 3;
     }
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("Finished in %.2f s\n", s);
+    std::printf("Finished in %.2f s (host memory peak %.1f MiB)\n", s,
+                double(seaspring::peakHostMemory()) / (1024.0 * 1024.0));
     return 0;
 }

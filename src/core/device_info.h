@@ -3,6 +3,7 @@
 /// \brief Which CUDA devices this process can use (none in a build without CUDA).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,13 @@ struct DeviceInfo {
     std::string name;
     int major = 0, minor = 0;   ///< compute capability
     double memory_gib = 0;
+};
+
+/// A backend's device memory: the bytes its arrays hold now and held at most (the process's
+/// allocations through core/device_memory.h), and the device's whole memory. All zero on the
+/// CPU backend, whose arrays are in the host's memory (peakHostMemory, memory_budget.h).
+struct DeviceMemoryUse {
+    std::uint64_t held = 0, peak = 0, total = 0;
 };
 
 /// True when the binary was built with the CUDA backend.

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "core/error.h"
@@ -28,6 +29,24 @@ std::uint64_t availableMemory() {
     }
     const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGE_SIZE);
     return pages > 0 && size > 0 ? std::uint64_t(pages) * std::uint64_t(size) : UINT64_MAX;
+}
+
+std::uint64_t peakHostMemory() {
+    struct rusage u {};
+    if (::getrusage(RUSAGE_SELF, &u) != 0) return 0;
+    return std::uint64_t(u.ru_maxrss) * 1024u;  // Linux: kilobytes
+}
+
+std::string outOfDeviceMemoryMessage(std::uint64_t request, std::uint64_t held, std::uint64_t free_bytes,
+                                     std::uint64_t total_bytes) {
+    const double mib = 1024.0 * 1024.0;
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "out of GPU memory: SeaSpring asked for %.1f MiB more while its arrays held %.1f MiB; the device "
+                  "had %.1f MiB free of %.1f MiB (the CUDA context and other processes hold the rest); generate "
+                  "the case with a larger dp, free the GPU, or run on the CPU (-cpu)",
+                  double(request) / mib, double(held) / mib, double(free_bytes) / mib, double(total_bytes) / mib);
+    return b;
 }
 
 std::string memoryProblem(const std::string& what, double bytes, const std::string& hint) {

@@ -15,6 +15,15 @@ namespace seaspring {
 /// shared machines).
 std::uint64_t availableMemory();
 
+/// The most host memory this process has held so far (its peak resident set, getrusage) [bytes].
+std::uint64_t peakHostMemory();
+
+/// "out of GPU memory: SeaSpring asked for R MiB more while its arrays held H MiB; the device had
+/// F MiB free of T MiB (...); generate the case with a larger dp, ..." (bytes in; MiB with one
+/// decimal out). core/device_memory.h throws it when an allocation does not fit.
+std::string outOfDeviceMemoryMessage(std::uint64_t request, std::uint64_t held, std::uint64_t free_bytes,
+                                     std::uint64_t total_bytes);
+
 /// "<what> needs about N GB of memory but only M GB are available; <hint>" when `bytes` exceeds
 /// availableMemory(), else "".
 std::string memoryProblem(const std::string& what, double bytes, const std::string& hint);

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/device_info.h"
 #include "solver/buffers.h"
 
 namespace seaspring::cpu {
@@ -32,6 +33,8 @@ public:
     std::string deviceName() const;
     int threads() const { return threads_; }
     int hostThreads() const { return threads_; }
+    /// No device: the arrays are in the host's memory.
+    DeviceMemoryUse deviceMemory() const { return {}; }
 
     /// f(i) for i in [b, e), spread as Launch says (launch.h).
     template <class Launch, class F>

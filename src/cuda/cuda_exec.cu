@@ -7,6 +7,8 @@
 #include <cub/device/device_partition.cuh>
 
 #include <cstring>
+
+#include "core/device_memory.h"
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -35,6 +37,15 @@ __global__ void stayerKeysKernel(std::uint32_t b, std::uint32_t e, const std::ui
     if (k >= at_least) atomicAdd(words + 2, 1u);
 }
 
+DeviceMemoryUse CudaExec::deviceMemory() const {
+    DeviceMemoryUse m;
+    m.held = deviceBytesHeld();
+    m.peak = deviceBytesPeak();
+    std::size_t free_bytes = 0, total_bytes = 0;
+    if (cudaMemGetInfo(&free_bytes, &total_bytes) == cudaSuccess) m.total = total_bytes;
+    return m;
+}
+
 namespace {
 /// SEASPRING_SOLID_BLOCK_MAX from the environment (a non-negative integer), else the default.
 std::uint32_t blockMaxFromEnv() {
@@ -59,6 +70,7 @@ CudaExec::CudaExec(int device, int host_threads) {
     const unsigned cores = std::thread::hardware_concurrency();
     host_threads_ = host_threads > 0 ? host_threads : (cores > 0 ? int(cores) : 1);
     SEASPRING_CUDA_CHECK(cudaSetDevice(device));
+    resetDevicePeak();  // the run's peak is its own (core/device_memory.h)
     cudaDeviceProp prop{};
     SEASPRING_CUDA_CHECK(cudaGetDeviceProperties(&prop, device));
     name_ = prop.name;

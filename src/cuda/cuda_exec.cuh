@@ -19,6 +19,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/device_info.h"
 #include "cuda/cuda_check.cuh"
 #include "cuda/device_buffer.cuh"
 
@@ -218,6 +219,9 @@ public:
     std::string deviceName() const { return name_; }
     int threads() const { return 1; }
     int hostThreads() const { return host_threads_; }
+    /// The bytes the process's device arrays hold and held at most since this policy was made
+    /// (core/device_memory.h), and the device's memory.
+    DeviceMemoryUse deviceMemory() const;
 
     template <class Launch, class F>
     void forEach(std::uint32_t b, std::uint32_t e, const F& f) const {

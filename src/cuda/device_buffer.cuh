@@ -1,6 +1,7 @@
 // SeaSpring — MIT licence.
 /// \file device_buffer.cuh
-/// \brief Owning device allocation (cudaMalloc / cudaFree), movable, not copyable.
+/// \brief Owning device allocation (deviceAllocate / deviceFree of core/device_memory.h: the ledger
+///        of the bytes held and the out-of-memory message), movable, not copyable.
 #pragma once
 
 #include <cuda_runtime.h>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "cuda/cuda_check.cuh"
+#include "core/device_memory.h"
 
 namespace seaspring::cuda {
 
@@ -83,7 +85,7 @@ public:
     void resize(std::size_t n) {
         if (n == n_) return;
         release();
-        if (n > 0) SEASPRING_CUDA_CHECK(cudaMalloc(&p_, n * sizeof(T)));
+        if (n > 0) ::seaspring::deviceAllocate(reinterpret_cast<void**>(&p_), n * sizeof(T));
         n_ = n;
     }
     /// Small uploads are queued (PinnedStaging), larger ones wait for the device.
@@ -104,7 +106,7 @@ public:
 
 private:
     void release() {
-        if (p_) cudaFree(p_);
+        ::seaspring::deviceFree(p_, n_ * sizeof(T));
         p_ = nullptr;
         n_ = 0;
     }

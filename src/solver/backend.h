@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/checkpoint_data.h"
+#include "core/device_info.h"
 #include "physics/cell_grid.h"
 #include "physics/fluid_constants.h"
 #include "physics/gauges.h"
@@ -149,6 +150,8 @@ public:
     /// Host threads for the bulk host work of outputs (the state into id order, the part
     /// file's arrays): the OpenMP threads on the CPU; beside a GPU, -threads or every core.
     virtual int hostThreads() const = 0;
+    /// The device memory of the backend's arrays (zero on the CPU; core/device_info.h).
+    virtual DeviceMemoryUse deviceMemory() const = 0;
 
     virtual void init(const BackendSetup& setup) = 0;
     /// Sorts the active particles by cell (moving boundaries too when there are any), drops

@@ -47,6 +47,7 @@ public:
     std::string deviceName() const override { return exec_.deviceName(); }
     int threads() const override { return exec_.threads(); }
     int hostThreads() const override { return exec_.hostThreads(); }
+    DeviceMemoryUse deviceMemory() const override { return exec_.deviceMemory(); }
 
     void init(const BackendSetup& s) override {
         if (s.pair_lanes == 0 || s.pair_lanes > physics::kMaxPairLanes || (s.pair_lanes & (s.pair_lanes - 1u)) != 0)

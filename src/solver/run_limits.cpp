@@ -13,9 +13,10 @@
 
 namespace seaspring::solver {
 
-void checkRunMemory(const SolverCase& c) {
-    checkMemory(c.h5_path, 0, "the run's " + std::to_string(c.particles.size()) + " particles",
-                double(c.particles.size()) * kRunBytesPerParticle, "generate the case with a larger dp");
+void checkRunMemory(const SolverCase& c, bool gpu) {
+    checkMemory(c.h5_path, 0, "the run (" + std::to_string(c.particles.size()) + " particles)",
+                double(c.particles.size()) * (gpu ? kRunBytesPerParticleGpu : kRunBytesPerParticle),
+                "generate the case with a larger dp");
 }
 
 void checkSolidSubstep(const SolverCase& c, const SolidSetup& s) {

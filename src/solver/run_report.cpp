@@ -51,6 +51,14 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     j.value("outputs", s.outputs);
     j.value("output_time_s", s.output_time);
     j.value("gauge_rows", s.gauge_rows);
+    j.beginObject("memory");  // at the summary's time (simulation.h)
+    j.value("host_peak_bytes", static_cast<unsigned long long>(s.host_bytes_peak));
+    if (s.gpu_bytes_total > 0) {
+        j.value("gpu_arrays_peak_bytes", static_cast<unsigned long long>(s.gpu_bytes_peak));
+        j.value("gpu_arrays_bytes_per_particle", s.np > 0 ? double(s.gpu_bytes_peak) / double(s.np) : 0.0);
+        j.value("gpu_total_bytes", static_cast<unsigned long long>(s.gpu_bytes_total));
+    }
+    j.endObject();
     if (s.nsolid > 0) {
         j.beginObject("solids");
         j.value("particles", static_cast<long long>(s.nsolid));
@@ -115,6 +123,20 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     io::writeTextFileAtomic(path, j.str() + "\n");
 }
 
+std::string memoryLine(const RunSummary& s) {
+    const double mib = 1024.0 * 1024.0, np = s.np > 0 ? double(s.np) : 1.0;
+    char line[320];
+    std::string out = "Memory:";
+    if (s.gpu_bytes_total > 0) {
+        std::snprintf(line, sizeof line, " GPU arrays at most %.1f MiB (%.1f bytes per particle) of the device's %.0f MiB;",
+                      double(s.gpu_bytes_peak) / mib, double(s.gpu_bytes_peak) / np, double(s.gpu_bytes_total) / mib);
+        out += line;
+    }
+    std::snprintf(line, sizeof line, " host peak %.1f MiB (%.0f bytes per particle)\n", double(s.host_bytes_peak) / mib,
+                  double(s.host_bytes_peak) / np);
+    return out + line;
+}
+
 void printSummary(std::ostream& os, const RunSummary& s) {
     char line[512];
     std::snprintf(line, sizeof line,
@@ -167,6 +189,7 @@ void printSummary(std::ostream& os, const RunSummary& s) {
                           o.mkbound, o.outside, o.particles, o.most, o.first_time);
             os << line;
         }
+    os << memoryLine(s);
     os << "State hash: " << s.state_hash << "\n";
 }
 

@@ -12,6 +12,9 @@ namespace seaspring::solver {
 
 /// Writes the summary as JSON to `path` (atomically).
 void writeRunJson(const std::string& path, const RunSummary& s);
+/// "Memory: GPU arrays at most M MiB (B bytes per particle) of the device's T MiB; host peak H MiB
+/// (B bytes per particle)\n" (the GPU part on the GPU only).
+std::string memoryLine(const RunSummary& s);
 /// Human-readable end-of-run lines.
 void printSummary(std::ostream& os, const RunSummary& s);
 

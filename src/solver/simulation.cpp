@@ -242,7 +242,7 @@ BackendSetup makeBackendSetup(const SolverCase& c, int cell_div, double skin, in
 Simulation::Simulation(const SolverCase& c, const RunOptions& o, std::unique_ptr<Backend> backend,
                        std::ostream& log)
     : case_(c), opt_(o), backend_(std::move(backend)), log_(log) {
-    checkRunMemory(c);
+    checkRunMemory(c, backend_->name() == "gpu");
     setup_ = makeBackendSetup(c, o.cell_div, resolveSkin(c, o), o.pair_lanes, o.cell_switch);
     checkSolidSubstep(c, setup_.solid);
     health_ = std::make_shared<Health>(c, setup_, opt_);

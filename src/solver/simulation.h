@@ -64,6 +64,9 @@ struct RunSummary {
     double restart_time = -1;       ///< [s] it continued from
     std::string last_good_output;            ///< blow-up: the part file holding the last good state
     double last_good_time = -1;              ///< [s] of that state
+    // Memory (at the summary's time): the process's host peak, and on the GPU the most its arrays
+    // held (cuda/device_memory.cuh) and the device's whole memory [bytes].
+    std::uint64_t host_bytes_peak = 0, gpu_bytes_peak = 0, gpu_bytes_total = 0;
 };
 
 /// Builds the backend's initial data from the case (particles in id order); cells of
@@ -117,8 +120,9 @@ public:
                std::ostream& log);
     /// Runs to TimeMax (or -nsteps), writing outputs; returns the summary (also run.json).
     RunSummary run();
-    /// The summary so far (after run() threw: what the run had reached).
-    const RunSummary& summary() const { return sum_; }
+    /// The summary so far (after run() threw: what the run had reached), its memory figures
+    /// read now.
+    RunSummary summary() const;
     /// The state at the end of run() (id order).
     const HostState& finalState() const { return final_; }
     /// Called at every output time (t = 0, each TimeOut, the end) with the state in id order,

@@ -12,6 +12,8 @@
 #include <ostream>
 #include <string>
 
+#include "core/device_memory.h"
+#include "core/memory_budget.h"
 #include "solver/gauge_system.h"
 #include "solver/phase_timers.h"
 #include "solver/run_progress.h"
@@ -85,7 +87,12 @@ RunSummary Simulation::run() {
     PhaseTimers timers(*backend_);  // SEASPRING_TIMERS=1
     StepContext ctx(*backend_, case_, setup_, opt_.solid_substeps, timers);
 
-    backend_->init(setup_);
+    try {
+        backend_->init(setup_);
+    } catch (const OutOfDeviceMemory& e) {  // the case is too large for the device: name it
+        throw Error(formatLocation(case_.h5_path, 0,
+                                   "the run's " + std::to_string(sum_.np) + " particles do not fit the GPU: " + e.what()));
+    }
     const std::unique_ptr<TimeStepper> stepper = makeTimeStepper(ctx);
     LoopState loop;
     if (resume_) {  // -restart: the saved state in place of the start (simulation_checkpoint.cpp)
@@ -105,7 +112,7 @@ RunSummary Simulation::run() {
         }
         if (!output(0.0, 0)) {  // a state that is not finite from the start
             finish(0.0, 0, 0.0, ctx.counters());
-            return sum_;
+            return summary();
         }
         loop.next_out = tout;
         loop.next_checkpoint = nextCheckpoint(0.0);
@@ -202,7 +209,16 @@ RunSummary Simulation::run() {
     sum_.steps_run = step - step0;
     finish(t, step, loop_time, ctx.counters());
     sum_.wall_time = std::chrono::duration<double>(Clock::now() - t_start).count();
-    return sum_;
+    return summary();
+}
+
+RunSummary Simulation::summary() const {
+    RunSummary s = sum_;
+    s.host_bytes_peak = peakHostMemory();
+    const DeviceMemoryUse m = backend_->deviceMemory();
+    s.gpu_bytes_peak = m.peak;
+    s.gpu_bytes_total = m.total;
+    return s;
 }
 
 void Simulation::finish(double t, long long step, double loop_time, const StepCounters& counters) {

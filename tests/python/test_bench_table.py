@@ -1,6 +1,6 @@
 """Tests of tools/bench_table.py's sluice records (tools/bench.sh sluice, sluicerun): the window's
 estimate, the coarse run's whole-run factor and the whole-run estimate, on synthetic solver logs
-with known answers.
+with known answers; and of its capacity records (bench.sh capacity) on a synthetic run.
 
 Run: /usr/bin/python3 -m unittest discover -s tests/python -p test_bench_table.py -v"""
 import csv
@@ -79,6 +79,57 @@ class SluiceRecords(unittest.TestCase):
         (row,) = self.rows()
         self.assertEqual(row["status"], "FAILED")
         self.assertIn("no rate", row["note"])
+
+
+class CapacityRecords(unittest.TestCase):
+    def test_largest_case_on_the_gpu_and_in_host_memory(self):
+        d = tempfile.mkdtemp()
+        raw = os.path.join(d, "runs.csv")
+        mib = 1024.0 * 1024.0
+        n = 1000000
+        # The run: 150 B per particle in its arrays, a 10,000 MiB device, memory.used peaking at
+        # 1,000 MiB; the solver's host peak 400 MB, gencase's 200 MiB, the case file 50 MB.
+        rj = os.path.join(d, "run.json")
+        with open(rj, "w") as f:
+            json.dump({"particles": {"total": n}, "steps": 10, "physical_time_s": 1e-3, "loop_time_s": 1.0,
+                       "ns_per_particle_step": 100.0, "state_hash": "ab",
+                       "memory": {"host_peak_bytes": 400 * n, "gpu_arrays_peak_bytes": 150 * n,
+                                  "gpu_arrays_bytes_per_particle": 150.0, "gpu_total_bytes": 10000 * mib}}, f)
+        samples = os.path.join(d, "capacity.mem")
+        with open(samples, "w") as f:
+            f.write("500\n1000\n700\n")
+        run("record", raw, "capacity", "new", "1", "gpu_bpp", rj)
+        run("memory", raw, "capacity_smi_peak", "new", "1", samples, str(n))
+        log = os.path.join(d, "spheric.gencase.log")
+        with open(log, "w") as f:
+            f.write("Particles: 1000000 (...)\nFinished in 1.00 s (host memory peak 200.0 MiB)\n")
+        with open(os.path.join(d, "spheric.h5"), "wb") as f:
+            f.write(b"\0" * (50 * n))
+        run("capacity", raw, "new", "1", rj, log, str(64 * 2**30))
+        with open(raw, newline="") as f:
+            rows = {r["bench"]: r for r in csv.DictReader(f)}
+        self.assertAlmostEqual(float(rows["capacity"]["value"]), 150.0)
+        self.assertAlmostEqual(float(rows["capacity_smi_peak"]["value"]), 1000.0)
+        self.assertAlmostEqual(float(rows["capacity_host_bpp"]["value"]), 400.0)
+        self.assertAlmostEqual(float(rows["capacity_gencase_bpp"]["value"]), 200.0 * mib / n, places=3)
+        self.assertAlmostEqual(float(rows["capacity_case_bpp"]["value"]), 50.0)
+        # GPU: 1 M + 9,000 MiB / 150 B; host: 64 GiB / 400 B (the solver's is the larger).
+        self.assertAlmostEqual(float(rows["capacity_n_gpu"]["value"]), (n + 9000 * mib / 150.0) / 1e6, places=3)
+        self.assertAlmostEqual(float(rows["capacity_n_host"]["value"]), 64 * 2**30 / 400.0 / 1e6, places=3)
+        out = os.path.join(d, "bench.csv")
+        run("table", raw, out)
+        with open(out, newline="") as f:
+            table = {r[0]: r for r in csv.reader(f)}
+        self.assertIn("Largest SPHERIC-like case, this GPU", table)
+
+    def test_a_run_without_memory_figures_fails_visibly(self):
+        d = tempfile.mkdtemp()
+        raw = os.path.join(d, "runs.csv")
+        run("capacity", raw, "new", "1", os.path.join(d, "none.json"), os.path.join(d, "none.log"), "1")
+        with open(raw, newline="") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(len(rows), 5)
+        self.assertTrue(all(r["status"] == "FAILED" for r in rows))
 
 
 if __name__ == "__main__":

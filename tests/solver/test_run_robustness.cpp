@@ -9,12 +9,16 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
 
 #include "../unit/error_expect.h"
+#include "core/device_memory.h"
+#include "physics/particle_fields.h"
+#include "solver/run_report.h"
 #include "solver/output_dir.h"
 #include "solver/stop_signal.h"
 #include "solver_test_util.h"
@@ -285,6 +289,88 @@ TEST(RunRobustness, TheProgramWritesRunJsonWithTheDiagnosisAndExitsWithOne) {
     EXPECT_HAS(json, "\"likely_option\": \"DtFixed / -dtfixed");
     EXPECT_HAS(test::readFile(dir + "/out/Run.out"), "blow-up detected (fluid loss)");
     EXPECT_HAS(test::readFile(dir + "/log.txt"), "Stopped (blow-up: fluid loss)");
+    EXPECT_HAS(json, "\"memory\": {");
+    EXPECT_HAS(json, "\"host_peak_bytes\": ");  // the CPU: no GPU figures
+    EXPECT_EQ(json.find("gpu_arrays_peak_bytes"), std::string::npos) << json;
+    EXPECT_HAS(test::readFile(dir + "/log.txt"), "\nMemory: host peak ");
+}
+
+// The memory a run reports (summary, run.json, Run.out's "Memory:" line): the host's peak on
+// every backend; on the GPU the most its arrays held (the device ledger, core/device_memory.h) —
+// at least every particle's always-present fields of the field table, counted in bytes — and
+// every byte of it given back when the run's backend goes.
+TEST(RunRobustness, RunsReportTheirMemoryAndTheGpuGivesItBack) {
+    const std::string dir = test::scratch("robust_memory");
+    const std::string kase = damBreak(dir);
+    std::uint64_t always = 0;  // bytes per particle of the fields every run allocates
+#define SEASPRING_ADD_ALWAYS(name, type, need, flags) \
+    if (physics::FieldNeed::need == physics::FieldNeed::Always) always += sizeof(type);
+    SEASPRING_PARTICLE_FIELDS(SEASPRING_ADD_ALWAYS)
+#undef SEASPRING_ADD_ALWAYS
+    EXPECT_GE(always, 100u);
+    const auto steps = [](solver::RunOptions& o) { o.nsteps = 5; };
+    const test::SolverRun cpu = test::runCpu(kase, dir + "/cpu", 1, steps);
+    EXPECT_GT(cpu.summary.host_bytes_peak, std::uint64_t(cpu.summary.np) * always);
+    EXPECT_EQ(cpu.summary.gpu_bytes_peak, 0u);
+    EXPECT_EQ(cpu.summary.gpu_bytes_total, 0u);
+    EXPECT_EQ(solver::memoryLine(cpu.summary).rfind("Memory: host peak ", 0), 0u) << solver::memoryLine(cpu.summary);
+
+    const std::uint64_t held = deviceBytesHeld();  // before the backend's own few bytes
+    std::string why;
+    std::unique_ptr<solver::Backend> gpu = solver::makeCudaBackend(0, why);
+    if (!gpu) GTEST_SKIP() << "the GPU's figures: " << why << " (the CPU's were checked)";
+    const test::SolverRun g = test::runOn(std::move(gpu), kase, dir + "/gpu", steps);
+    EXPECT_EQ(deviceBytesHeld(), held) << "the run's device arrays were not all given back";
+    EXPECT_GE(g.summary.gpu_bytes_peak, held + std::uint64_t(g.summary.np) * always);
+    EXPECT_LT(g.summary.gpu_bytes_peak, g.summary.gpu_bytes_total);
+    EXPECT_GT(g.summary.gpu_bytes_total, std::uint64_t(1) << 30);
+    EXPECT_EQ(g.summary.state_hash, cpu.summary.state_hash);
+    const std::string line = solver::memoryLine(g.summary);
+    EXPECT_EQ(line.rfind("Memory: GPU arrays at most ", 0), 0u) << line;
+    EXPECT_HAS(line, " bytes per particle) of the device's ");
+}
+
+// A case too large for the host's memory (here capped at 1.5 MB by SEASPRING_MEMORY_LIMIT) is
+// refused before the run, naming the case file and what it needs: on the CPU 3601 particles x
+// 540 B; on the GPU, whose arrays are on the device, 3601 x 360 B fits, and the run goes on.
+TEST(RunRobustness, ACaseTooLargeForTheHostIsRefusedNamingIt) {
+    const std::string dir = test::scratch("robust_host_memory");
+    const std::string kase = damBreak(dir);
+    ::setenv("SEASPRING_MEMORY_LIMIT", "1500000", 1);
+    const int code = runProgram("-cpu -threads:1 -progress:0 -nsteps:2 '" + kase + "' '" + dir + "/out'",
+                                dir + "/log.txt");
+    std::string why;
+    const bool gpu = solver::makeCudaBackend(0, why) != nullptr;
+    const int gpu_code = gpu ? runProgram("-gpu -progress:0 -nsteps:2 -sv:none '" + kase + "' '" + dir + "/out_gpu'",
+                                          dir + "/log_gpu.txt")
+                             : -1;
+    ::unsetenv("SEASPRING_MEMORY_LIMIT");
+    EXPECT_EQ(code, 2);
+    EXPECT_HAS(test::readFile(dir + "/log.txt"),
+               "Front.h5: the run (3601 particles) needs about 0.00194 GB of memory but only 0.0015 GB are "
+               "available; generate the case with a larger dp");
+    if (!gpu) GTEST_SKIP() << "the GPU's bound: " << why << " (the CPU's refusal was checked)";
+    EXPECT_EQ(gpu_code, 0) << test::readFile(dir + "/log_gpu.txt");
+}
+
+// A case too large for the GPU (here: the device capped at 64 KiB by SEASPRING_DEVICE_MEMORY_LIMIT;
+// the positions alone take 84 KiB) stops with exit 1 naming the case file, its particles, what
+// was asked, held and free, and what to change; run.json says so. Without a GPU: skipped.
+TEST(RunRobustness, ACaseTooLargeForTheGpuSaysWhichAndWhatToChange) {
+    std::string why;
+    if (!solver::makeCudaBackend(0, why)) GTEST_SKIP() << why;
+    const std::string dir = test::scratch("robust_gpu_memory");
+    const std::string kase = damBreak(dir);
+    ::setenv("SEASPRING_DEVICE_MEMORY_LIMIT", "65536", 1);  // the program's environment
+    const int code = runProgram("-gpu -progress:0 '" + kase + "' '" + dir + "/out'", dir + "/log.txt");
+    ::unsetenv("SEASPRING_DEVICE_MEMORY_LIMIT");
+    EXPECT_EQ(code, 1);
+    const std::string log = test::readFile(dir + "/log.txt");
+    EXPECT_HAS(log, "Front.h5: the run's 3601 particles do not fit the GPU: out of GPU memory: SeaSpring asked for ");
+    EXPECT_HAS(log, "free of 0.1 MiB");
+    EXPECT_HAS(log, "generate the case with a larger dp, free the GPU, or run on the CPU (-cpu)");
+    EXPECT_HAS(log, "(SEASPRING_DEVICE_MEMORY_LIMIT=65536)");
+    EXPECT_HAS(test::readFile(dir + "/out/run.json"), "\"exit_code\": 1");
 }
 
 // -sv:none on a fluid-only case: at an output nothing reads the state, so the backend's count of

@@ -9,6 +9,9 @@
 
 #include "core/device_info.h"
 #include "core/device_math_check.h"
+#include "core/device_memory.h"
+#include "core/error.h"
+#include "core/memory_budget.h"
 #include "physics/sph_kernels.h"
 #include "physics/sph_types.h"
 
@@ -26,6 +29,61 @@ TEST(CudaDevice, QueryReportsDevicesOrWhyNot) {
         // The build targets compute capability 9.0 (H100/H200).
         EXPECT_GE(d.major, 9) << d.name << " is sm_" << d.major << d.minor;
     }
+}
+
+// The message an allocation that does not fit stops with: what was asked, what SeaSpring held,
+// what the device had, and what to change (MiB with one decimal).
+TEST(DeviceMemory, OutOfMemoryMessageSaysWhatToChange) {
+    const std::uint64_t mib = 1024u * 1024u;
+    EXPECT_EQ(seaspring::outOfDeviceMemoryMessage(3 * mib + mib / 2, 5 * mib, 7 * mib, 11 * mib),
+              "out of GPU memory: SeaSpring asked for 3.5 MiB more while its arrays held 5.0 MiB; the device had "
+              "7.0 MiB free of 11.0 MiB (the CUDA context and other processes hold the rest); generate the case "
+              "with a larger dp, free the GPU, or run on the CPU (-cpu)");
+}
+
+// The device ledger counts bytes: an allocation adds its bytes to the held and the peak, a free
+// takes them off; a request larger than the device fails with the message above, leaves the
+// ledger as it was and the device usable. A build without CUDA refuses every allocation.
+TEST(DeviceMemory, LedgerCountsBytesAndATooLargeRequestSaysWhatToChange) {
+    using namespace seaspring;
+    const std::uint64_t mib = 1024u * 1024u;
+    void* p = nullptr;
+    if (!cudaBackendBuilt()) {
+        try {
+            deviceAllocate(&p, mib);
+            ADD_FAILURE() << "a build without CUDA allocated device memory";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("this build has no CUDA backend"), std::string::npos) << e.what();
+        }
+        GTEST_SKIP() << "no CUDA backend in this build (the refusal was checked)";
+    }
+    std::string why;
+    if (listCudaDevices(&why).empty()) GTEST_SKIP() << "no CUDA device: " << why;
+    const std::uint64_t held0 = deviceBytesHeld();
+    resetDevicePeak();
+    deviceAllocate(&p, 3 * mib);
+    EXPECT_EQ(deviceBytesHeld(), held0 + 3 * mib);
+    EXPECT_EQ(deviceBytesPeak(), held0 + 3 * mib);
+    void* huge = nullptr;
+    const std::uint64_t pib = mib * mib * 1024u;  // 2^50 bytes: no GPU has that
+    try {
+        deviceAllocate(&huge, std::size_t(pib));
+        ADD_FAILURE() << "a 1 PiB device allocation succeeded";
+        deviceFree(huge, std::size_t(pib));
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(m.rfind("out of GPU memory: SeaSpring asked for 1073741824.0 MiB more while its arrays held ", 0), 0u)
+            << m;
+        EXPECT_NE(m.find("generate the case with a larger dp"), std::string::npos) << m;
+    }
+    EXPECT_EQ(deviceBytesHeld(), held0 + 3 * mib);
+    void* q = nullptr;
+    deviceAllocate(&q, mib);  // the failure left the device usable
+    EXPECT_EQ(deviceBytesPeak(), held0 + 4 * mib);
+    deviceFree(q, mib);
+    deviceFree(p, 3 * mib);
+    EXPECT_EQ(deviceBytesHeld(), held0);
+    EXPECT_EQ(deviceBytesPeak(), held0 + 4 * mib);
 }
 
 // physics::sqrtNormalRange is the fast path of the GPU's IEEE square root without its range
