@@ -124,6 +124,13 @@ template <typename T>
 void copyToHost(const DeviceBuffer<T>& src, std::vector<T>& dst) {
     src.download(dst);
 }
+/// dst = n all-zero elements (cudaMemset: the bits of T{} for the solver's field types, whose
+/// zero is +0 in every member).
+template <typename T>
+void fillZero(DeviceBuffer<T>& dst, std::size_t n) {
+    dst.resize(n);
+    if (n > 0) SEASPRING_CUDA_CHECK(cudaMemset(dst.data(), 0, n * sizeof(T)));
+}
 /// The bytes of src into dst (src.size() * sizeof(T) bytes of host memory).
 template <typename T>
 void copyToHostBytes(const DeviceBuffer<T>& src, void* dst) {

@@ -53,9 +53,12 @@ struct CellSwitch {
     physics::CellGrid grid;  ///< the cells of h (the run's skin in its cells)
 };
 
-/// Initial data, particles in id order: [0, nbound) boundary (fixed, moving, then VCPM solid
-/// particles, which the fluid sees as DBC boundary particles), then fluid.
-struct BackendSetup {
+/// What a backend keeps of its set-up: everything but the initial particle state, which
+/// Backend::init uploads (40 bytes per particle of host memory no backend holds after it; the
+/// engine keeps a BackendConfig, sliced from the BackendSetup it is given). Particles in id
+/// order: [0, nbound) boundary (fixed, moving, then VCPM solid particles, which the fluid sees
+/// as DBC boundary particles), then fluid.
+struct BackendConfig {
     PhysicsChoice physics;
     physics::FluidConstants fluid;
     physics::CellGrid grid;
@@ -65,8 +68,6 @@ struct BackendSetup {
     bool symplectic = true;
     std::uint32_t nbound = 0, nfluid = 0;
     std::uint32_t first_moving = 0, nmoving = 0;  ///< moving boundary ids
-    std::vector<physics::Double3> pos;            ///< np
-    std::vector<physics::Float4> velrho;          ///< np
     std::vector<physics::Double3> moving_pos0;    ///< nmoving: initial positions
     std::vector<std::uint16_t> moving_object;     ///< nmoving: index into the motions array
     std::uint32_t motion_objects = 0;
@@ -76,6 +77,13 @@ struct BackendSetup {
     std::uint32_t pair_lanes = 1;
     MdbcSetup mdbc;                               ///< mDBC (disabled: DBC)
     CellSwitch cell_switch;                       ///< cells of h once the fluid is disordered (off: never)
+};
+
+/// The initial data a backend is set up from: its configuration and the particles' initial
+/// state (id order).
+struct BackendSetup : BackendConfig {
+    std::vector<physics::Double3> pos;            ///< np
+    std::vector<physics::Float4> velrho;          ///< np
 };
 
 /// State copied back to the host, in id order: the particle fields flagged physics::kHost or

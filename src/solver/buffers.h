@@ -4,8 +4,8 @@
 ///        solid_arrays.h, engine.h) uses for arrays: `Buf<T>` is std::vector on the host
 ///        (HostExec) and cuda::DeviceBuffer on the GPU (CudaExec). A container provides
 ///        data(), size(), empty() and resize(n) (contents unspecified after a size change), and
-///        the free functions below, found by argument-dependent lookup; DeviceBuffer's are in
-///        cuda/device_buffer.cuh.
+///        the free functions below (assignFrom, fillZero, copyToHost, copyToHostBytes), found by
+///        argument-dependent lookup; DeviceBuffer's are in cuda/device_buffer.cuh.
 #pragma once
 
 #include <cstring>
@@ -20,6 +20,11 @@ using HostBuffer = std::vector<T>;
 template <typename T>
 void assignFrom(std::vector<T>& dst, const std::vector<T>& src) {
     dst = src;
+}
+/// dst = n value-initialised (all-zero) elements, without a host copy on the GPU (a memset there).
+template <typename T>
+void fillZero(std::vector<T>& dst, std::size_t n) {
+    dst.assign(n, T{});
 }
 /// dst = the contents of src, on the host.
 template <typename T>

@@ -68,7 +68,7 @@ public:
         const bool sps = s.physics.visco == physics::Viscosity::LaminarSps;
         p_.forEachField([&](auto& buf, unsigned, physics::FieldNeed need) {
             using T = std::remove_pointer_t<decltype(buf.data())>;
-            if (physics::fieldNeeded(need, sps)) assignFrom(buf, std::vector<T>(np, T{}));
+            if (physics::fieldNeeded(need, sps)) fillZero(buf, np);
             else buf = Buf<T>();
         });
         std::vector<std::uint32_t> ids(np);
@@ -532,7 +532,7 @@ private:
     /// The last sub-cycle ran the per-step test's checks at the current positions (SolidEndPass):
     /// startSolidsCheck then only counts the alarms.
     bool solid_end_checked_ = false;
-    BackendSetup setup_;
+    BackendConfig setup_;  // sliced: the initial state is uploaded, not kept
     std::uint32_t nbound_ = 0, nfluid_ = 0;
     std::uint32_t sort_merge_min_ = kMergeMinParticles;  ///< sortBlockRange merges from this block size
     bool sorted_ = false;  ///< the fluid block was sorted once (divide)

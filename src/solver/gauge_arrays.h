@@ -89,7 +89,7 @@ struct GaugeArrays {
 
     /// The answers for the sorted state `v` (fluid cell ranges `cs_fluid`), into `out`.
     template <class Exec>
-    void answer(const Exec& exec, const BackendSetup& setup, const std::uint32_t* cs_fluid,
+    void answer(const Exec& exec, const BackendConfig& setup, const std::uint32_t* cs_fluid,
                 const physics::ParticleView& v, std::uint32_t nbound, GaugeResults& out) {
         const std::uint32_t npts = std::uint32_t(points.size()), nrows = std::uint32_t(rows.size());
         dispatchKernelDim(setup.physics, [&](auto kernel, auto dim) {

@@ -14,17 +14,17 @@ namespace seaspring::solver {
 /// The most VCPM sub-steps a run may need to reach TimeMax.
 constexpr double kMaxSolidSubsteps = 1e12;
 
-/// Host memory per particle of a run on the CPU [bytes]: the case's particles, the backend's
-/// initial data, the CPU backend's arrays and the state copies of the outputs and the blow-up
-/// check. Measured at the peak (core/memory_budget.h peakHostMemory, run.json's memory): SPHERIC
-/// Test 2 at 2.0 M particles, 2 threads, 486 B with part files (364 B with -sv:none); with
-/// laminar+SPS add the stress fields (48 B).
-constexpr double kRunBytesPerParticle = 540;
+/// Host memory per particle of a run on the CPU [bytes]: the case's particles, the CPU backend's
+/// arrays, the state copies of the outputs and the blow-up check (the initial state's copy is
+/// freed once the backend holds it). Measured at the peak (core/memory_budget.h peakHostMemory,
+/// run.json's memory): SPHERIC Test 2 at 2.0 M particles, 2 threads, 405 B with part files
+/// (278 B with -sv:none); laminar+SPS adds its stress fields (48 B).
+constexpr double kRunBytesPerParticle = 480;
 /// The same for a run on the GPU, whose arrays are on the device. Measured on an NVIDIA H200's
 /// host (docs/performance-large.md, thirty-second session): SPHERIC Test 2 at 13.3 M particles
-/// 339 B with part files (211 B with -sv:none; 201 B at 220 M), FlexStruc Liao 3D 309 B with
-/// -sv:none.
-constexpr double kRunBytesPerParticleGpu = 360;
+/// 259 B with part files (131 B with -sv:none), FlexStruc Liao 3D (VCPM plate, moving walls)
+/// 292 B with part files (228 B with -sv:none).
+constexpr double kRunBytesPerParticleGpu = 320;
 
 /// Throws seaspring::Error (memory_budget.h) naming the case file when the run's host memory
 /// (kRunBytesPerParticle, or kRunBytesPerParticleGpu for `gpu`) would not fit.

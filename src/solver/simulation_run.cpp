@@ -93,6 +93,9 @@ RunSummary Simulation::run() {
         throw Error(formatLocation(case_.h5_path, 0,
                                    "the run's " + std::to_string(sum_.np) + " particles do not fit the GPU: " + e.what()));
     }
+    // The backend holds the initial state now: its host copy goes (40 bytes per particle).
+    std::vector<physics::Double3>().swap(setup_.pos);
+    std::vector<physics::Float4>().swap(setup_.velrho);
     const std::unique_ptr<TimeStepper> stepper = makeTimeStepper(ctx);
     LoopState loop;
     if (resume_) {  // -restart: the saved state in place of the start (simulation_checkpoint.cpp)

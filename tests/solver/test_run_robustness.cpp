@@ -332,7 +332,7 @@ TEST(RunRobustness, RunsReportTheirMemoryAndTheGpuGivesItBack) {
 
 // A case too large for the host's memory (here capped at 1.5 MB by SEASPRING_MEMORY_LIMIT) is
 // refused before the run, naming the case file and what it needs: on the CPU 3601 particles x
-// 540 B; on the GPU, whose arrays are on the device, 3601 x 360 B fits, and the run goes on.
+// 480 B; on the GPU, whose arrays are on the device, 3601 x 320 B fits, and the run goes on.
 TEST(RunRobustness, ACaseTooLargeForTheHostIsRefusedNamingIt) {
     const std::string dir = test::scratch("robust_host_memory");
     const std::string kase = damBreak(dir);
@@ -347,7 +347,7 @@ TEST(RunRobustness, ACaseTooLargeForTheHostIsRefusedNamingIt) {
     ::unsetenv("SEASPRING_MEMORY_LIMIT");
     EXPECT_EQ(code, 2);
     EXPECT_HAS(test::readFile(dir + "/log.txt"),
-               "Front.h5: the run (3601 particles) needs about 0.00194 GB of memory but only 0.0015 GB are "
+               "Front.h5: the run (3601 particles) needs about 0.00173 GB of memory but only 0.0015 GB are "
                "available; generate the case with a larger dp");
     if (!gpu) GTEST_SKIP() << "the GPU's bound: " << why << " (the CPU's refusal was checked)";
     EXPECT_EQ(gpu_code, 0) << test::readFile(dir + "/log_gpu.txt");
