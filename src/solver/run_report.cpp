@@ -128,7 +128,8 @@ std::string memoryLine(const RunSummary& s) {
     char line[320];
     std::string out = "Memory:";
     if (s.gpu_bytes_total > 0) {
-        std::snprintf(line, sizeof line, " GPU arrays at most %.1f MiB (%.1f bytes per particle) of the device's %.0f MiB;",
+        std::snprintf(line, sizeof line,
+                      " GPU arrays at most %.1f MiB (%.1f bytes per particle) of the device's %.0f MiB;",
                       double(s.gpu_bytes_peak) / mib, double(s.gpu_bytes_peak) / np, double(s.gpu_bytes_total) / mib);
         out += line;
     }

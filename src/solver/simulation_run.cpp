@@ -91,7 +91,8 @@ RunSummary Simulation::run() {
         backend_->init(setup_);
     } catch (const OutOfDeviceMemory& e) {  // the case is too large for the device: name it
         throw Error(formatLocation(case_.h5_path, 0,
-                                   "the run's " + std::to_string(sum_.np) + " particles do not fit the GPU: " + e.what()));
+                                   "the run's " + std::to_string(sum_.np) +
+                                       " particles do not fit the GPU: " + e.what()));
     }
     // The backend holds the initial state now: its host copy goes (40 bytes per particle).
     std::vector<physics::Double3>().swap(setup_.pos);
