@@ -26,8 +26,12 @@ constexpr double kRunBytesPerParticle = 480;
 /// 292 B with part files (228 B with -sv:none).
 constexpr double kRunBytesPerParticleGpu = 320;
 
+/// Host bytes of the case's particle arrays as read (the check runs after they are).
+double loadedCaseBytes(const SolverCase& c);
+
 /// Throws seaspring::Error (memory_budget.h) naming the case file when the run's host memory
-/// (kRunBytesPerParticle, or kRunBytesPerParticleGpu for `gpu`) would not fit.
+/// (kRunBytesPerParticle, or kRunBytesPerParticleGpu for `gpu`, less loadedCaseBytes, which
+/// MemAvailable no longer counts) would not fit.
 void checkRunMemory(const SolverCase& c, bool gpu);
 
 /// Throws seaspring::Error naming the solid's line and youngmod when TimeMax needs more than

@@ -20,6 +20,7 @@
 #include "physics/particle_fields.h"
 #include "solver/run_report.h"
 #include "solver/output_dir.h"
+#include "solver/run_limits.h"
 #include "solver/stop_signal.h"
 #include "solver_test_util.h"
 
@@ -330,25 +331,36 @@ TEST(RunRobustness, RunsReportTheirMemoryAndTheGpuGivesItBack) {
     EXPECT_HAS(line, " bytes per particle) of the device's ");
 }
 
-// A case too large for the host's memory (here capped at 1.5 MB by SEASPRING_MEMORY_LIMIT) is
-// refused before the run, naming the case file and what it needs: on the CPU 3601 particles x
-// 480 B; on the GPU, whose arrays are on the device, 3601 x 320 B fits, and the run goes on.
+// A case too large for the host's memory (capped by SEASPRING_MEMORY_LIMIT) is refused before
+// the run, naming the case file and what it needs beyond the case already read: on the CPU
+// 3601 particles x 480 B less the case's arrays (51-63 B each), about 1.50-1.54 MB, so 1.4 MB
+// is refused and 1.6 MB runs (counting the case twice, 1.73 MB, would refuse it); on the GPU,
+// whose arrays are on the device, 3601 x 320 B fits in 1.4 MB, and the run goes on.
 TEST(RunRobustness, ACaseTooLargeForTheHostIsRefusedNamingIt) {
     const std::string dir = test::scratch("robust_host_memory");
     const std::string kase = damBreak(dir);
-    ::setenv("SEASPRING_MEMORY_LIMIT", "1500000", 1);
-    const int code = runProgram("-cpu -threads:1 -progress:0 -nsteps:2 '" + kase + "' '" + dir + "/out'",
-                                dir + "/log.txt");
+    const solver::SolverCase c = solver::loadSolverCase(kase);
+    EXPECT_GE(solver::loadedCaseBytes(c), 3601.0 * 51);
+    EXPECT_LE(solver::loadedCaseBytes(c), 3601.0 * 63);
     std::string why;
     const bool gpu = solver::makeCudaBackend(0, why) != nullptr;
+    ::setenv("SEASPRING_MEMORY_LIMIT", "1400000", 1);
+    const int code = runProgram("-cpu -threads:1 -progress:0 -nsteps:2 '" + kase + "' '" + dir + "/out'",
+                                dir + "/log.txt");
     const int gpu_code = gpu ? runProgram("-gpu -progress:0 -nsteps:2 -sv:none '" + kase + "' '" + dir + "/out_gpu'",
                                           dir + "/log_gpu.txt")
                              : -1;
+    ::setenv("SEASPRING_MEMORY_LIMIT", "1600000", 1);
+    const int code_fits = runProgram("-cpu -threads:1 -progress:0 -nsteps:2 -sv:none '" + kase + "' '" + dir +
+                                         "/out_fits'",
+                                     dir + "/log_fits.txt");
     ::unsetenv("SEASPRING_MEMORY_LIMIT");
     EXPECT_EQ(code, 2);
     EXPECT_HAS(test::readFile(dir + "/log.txt"),
-               "Front.h5: the run (3601 particles) needs about 0.00173 GB of memory but only 0.0015 GB are "
-               "available; generate the case with a larger dp");
+               "Front.h5: the run (3601 particles) beyond its case as read needs about 0.0015");
+    EXPECT_HAS(test::readFile(dir + "/log.txt"),
+               "GB of memory but only 0.0014 GB are available; generate the case with a larger dp");
+    EXPECT_EQ(code_fits, 0) << test::readFile(dir + "/log_fits.txt");
     if (!gpu) GTEST_SKIP() << "the GPU's bound: " << why << " (the CPU's refusal was checked)";
     EXPECT_EQ(gpu_code, 0) << test::readFile(dir + "/log_gpu.txt");
 }
