@@ -29,7 +29,8 @@
 
 namespace seaspring::solver {
 
-/// The default share of the fluid off its cells' centres at which the cells switch (-cellswitch).
+/// The default share of the active fluid that shares its cell with another fluid particle, above
+/// which the cells switch (-cellswitch).
 constexpr double kCellSwitchFraction = 0.3;
 
 /// The fraction the switch of case `c` takes (> 0), or 0 where it does not apply: `fraction`
